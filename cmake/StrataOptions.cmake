@@ -1,0 +1,21 @@
+# Project-wide compile settings, applied through the interface target strata_settings.
+add_library(strata_settings INTERFACE)
+target_compile_features(strata_settings INTERFACE cxx_std_20)
+# SPEC §2: every grid quantity in plain IEEE double, no fused multiply-add.
+target_compile_options(strata_settings INTERFACE -ffp-contract=off -fno-fast-math)
+target_compile_options(strata_settings INTERFACE -Wall -Wextra -Wpedantic -Wno-unused-parameter)
+if(STRATA_WERROR)
+  target_compile_options(strata_settings INTERFACE -Werror)
+endif()
+if(STRATA_SANITIZE)
+  target_compile_options(strata_settings INTERFACE -fsanitize=${STRATA_SANITIZE} -fno-omit-frame-pointer
+                                                   -fno-sanitize-recover=all)
+  target_link_options(strata_settings INTERFACE -fsanitize=${STRATA_SANITIZE})
+endif()
+
+# Every source file below a folder of src/ belongs to the strata library, so adding a file to a
+# module needs no edit here.
+function(strata_glob_sources out_var)
+  file(GLOB_RECURSE _files CONFIGURE_DEPENDS ${ARGN})
+  set(${out_var} ${_files} PARENT_SCOPE)
+endfunction()

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "strata/mesh/vec3.hpp"
+
+namespace strata {
+
+using VertexIndex = std::uint32_t;
+using FacetIndex = std::uint32_t;
+
+/// Vertices shared by exact equality of their coordinates, and triangles indexing them.
+/// Facet order and each facet's vertex order (its orientation) are those of the input.
+struct IndexedMesh {
+  std::vector<Vec3> vertices;
+  std::vector<std::array<VertexIndex, 3>> triangles;
+
+  const Vec3& corner(FacetIndex f, int c) const { return vertices[triangles[f][c]]; }
+
+  Bbox3 bounds() const {
+    Bbox3 box;
+    for (const auto& v : vertices) box.add(v);
+    return box;
+  }
+};
+
+}  // namespace strata

@@ -1,0 +1,13 @@
+#pragma once
+
+#include "strata/mesh/indexed_mesh.hpp"
+#include "strata/mesh/triangle_soup.hpp"
+
+namespace strata {
+
+/// Builds an indexed mesh by merging corners whose coordinates are exactly equal (+0 and -0 are
+/// equal). Near-coincident but unequal corners stay distinct (SPEC §2b).
+/// Every input triangle is kept, in order, degenerate ones included. Complexity: expected O(n).
+IndexedMesh weld_vertices(const TriangleSoup& soup);
+
+}  // namespace strata

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <cstdint>
+
+#include "strata/contour/contour.hpp"
+#include "strata/fill/scanline_fill.hpp"
+
+namespace strata {
+
+/// What a slicing kernel computes for one layer, before the shell step.
+struct LayerGeometry {
+  LayerFill fill;  ///< solid bitmap and hatches
+  LayerContours contours;
+  std::uint32_t segments = 0;
+};
+
+/// A slicing kernel: the fast (double + exact fallback) or the exact (CGAL) path. The pipeline
+/// calls prepare_batch(k0, k1) from one thread, then compute_layer(k) for every k in [k0, k1),
+/// possibly concurrently; batches come in increasing order and do not overlap.
+class LayerKernel {
+ public:
+  virtual ~LayerKernel() = default;
+  virtual void prepare_batch(std::uint32_t k0, std::uint32_t k1) = 0;
+  virtual LayerGeometry compute_layer(std::uint32_t k) const = 0;
+};
+
+}  // namespace strata

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "strata/contour/contour.hpp"
+#include "strata/core/result.hpp"
+#include "strata/fill/scanline_fill.hpp"
+#include "strata/slice/grid_spec.hpp"
+#include "strata/slice/slice_options.hpp"
+#include "strata/voxel/cell_class.hpp"
+
+namespace strata {
+
+/// What every sink is told before the first layer.
+struct SliceRunInfo {
+  GridSpec grid;
+  SliceOptions options;
+  std::string model_name;  ///< the model's file stem, used to name outputs
+};
+
+/// One finished layer, handed to the sinks in increasing k. The references live until
+/// add_layer returns.
+struct LayerResult {
+  std::uint32_t layer = 0;
+  double z_mm = 0.0;
+  const std::vector<CellClass>& cells;  ///< nx * ny, row-major (j * nx + i)
+  const LayerContours& contours;
+  const std::vector<HatchSegment>& hatches;
+};
+
+/// A consumer of finished layers: a file writer, a statistics collector. Layers stream through,
+/// so a sink must not keep references past add_layer. If any step fails, abort() is called on
+/// every sink and must leave no partial file behind.
+class LayerSink {
+ public:
+  virtual ~LayerSink() = default;
+  virtual Result<void> begin(const SliceRunInfo& run) = 0;
+  virtual Result<void> add_layer(const LayerResult& layer) = 0;
+  virtual Result<void> finish() = 0;
+  virtual void abort() noexcept = 0;
+};
+
+}  // namespace strata

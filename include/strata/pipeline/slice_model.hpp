@@ -1,0 +1,71 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "strata/core/diagnostic.hpp"
+#include "strata/core/result.hpp"
+#include "strata/mesh/indexed_mesh.hpp"
+#include "strata/pipeline/layer_kernel.hpp"
+#include "strata/pipeline/layer_sink.hpp"
+
+namespace strata {
+
+/// Per-layer figures for the report and the diagnostics of SPEC §5 / issue 4.
+struct LayerStats {
+  std::uint32_t layer = 0;
+  double z_mm = 0.0;
+  std::uint32_t segments = 0;
+  std::uint32_t outer_loops = 0;
+  std::uint32_t holes = 0;
+  std::uint32_t open_chains = 0;
+  double contour_area_mm2 = 0.0;
+  std::uint64_t interior = 0;
+  std::uint64_t boundary = 0;
+};
+
+/// An open chain left in a layer: where it starts and ends.
+struct OpenChainReport {
+  std::uint32_t layer = 0;
+  Point2 start;
+  Point2 end;
+  std::uint32_t segments = 0;
+};
+
+struct SliceSummary {
+  GridSpec grid;
+  /// Cells by class: [0] empty, [1] interior, [2] boundary.
+  std::array<std::uint64_t, 3> class_counts{};
+  double solid_volume_mm3 = 0.0;    ///< (interior + boundary) * dx * dy * dz
+  double contour_volume_mm3 = 0.0;  ///< sum of layer contour areas * dz
+  std::uint64_t segments = 0;
+  std::uint64_t open_chains = 0;
+  std::uint64_t exact_fallbacks = 0;  ///< decisions the double filter handed to exact arithmetic
+  std::vector<LayerStats> layers;
+  std::vector<OpenChainReport> open_chain_reports;  ///< the first 1000
+  Diagnostics diagnostics;
+  double seconds = 0.0;
+};
+
+/// Reports progress: layers done out of the total.
+using ProgressCallback = std::function<void(std::uint32_t done, std::uint32_t total)>;
+
+/// Runs any kernel over all layers in batches, marks the shell (on `mesh`, which the kernel slices)
+/// and streams every classified layer to the sinks in order, holding only the shell window.
+Result<SliceSummary> run_slice(const IndexedMesh& mesh, const GridSpec& grid,
+                               const SliceOptions& options, LayerKernel& kernel,
+                               std::span<LayerSink* const> sinks,
+                               const ProgressCallback& progress = {});
+
+/// Slices a mesh on a grid with the fast path and streams every layer, classified, to the sinks
+/// in order. Only the window of layers the shell reaches is held in memory.
+/// @return the summary; or the first sink error (every sink is aborted then), or Error{Usage}
+///         for a fill rule the fast path does not implement.
+Result<SliceSummary> slice_model(const IndexedMesh& mesh, const GridSpec& grid,
+                                 const SliceOptions& options, std::span<LayerSink* const> sinks,
+                                 const ProgressCallback& progress = {});
+
+}  // namespace strata

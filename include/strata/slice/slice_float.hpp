@@ -1,0 +1,40 @@
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "strata/mesh/indexed_mesh.hpp"
+#include "strata/slice/grid_spec.hpp"
+#include "strata/slice/layer_segments.hpp"
+
+namespace strata {
+
+/// The layers each facet crosses: facet f crosses layer k iff zmin(f) < zk <= zmax(f), decided
+/// by exact comparisons with the double zk. `first[f] > last[f]` when it crosses none
+/// (horizontal facets, facets between two planes).
+struct FacetLayerRanges {
+  std::vector<std::uint32_t> first;
+  std::vector<std::uint32_t> last;
+};
+
+/// Computes every facet's layer range in O(n).
+FacetLayerRanges facet_layer_ranges(const IndexedMesh& mesh, const GridSpec& grid);
+
+/// Facets grouped by the layer they start in (CSR), so a sweep over layers touches each facet
+/// only while it can reach the plane: O(n + k + m) in all (Minetto et al. 2017).
+struct FacetBuckets {
+  std::vector<std::uint32_t> offsets;  ///< nz + 1 entries
+  std::vector<FacetIndex> facets;      ///< facets starting in layer k: [offsets[k], offsets[k+1])
+};
+
+FacetBuckets bucket_facets_by_first_layer(const FacetLayerRanges& ranges, std::uint32_t nz);
+
+/// Cuts the candidate facets with plane z = grid.zk(layer). A facet yields one segment when its
+/// vertices lie on both sides (a vertex with z == zk counts as above); horizontal facets and
+/// facets touching the plane from above yield none.
+/// @param candidates facets whose range contains the layer (others are skipped cheaply)
+LayerSegments slice_layer(const IndexedMesh& mesh, std::span<const FacetIndex> candidates,
+                          const GridSpec& grid, std::uint32_t layer);
+
+}  // namespace strata

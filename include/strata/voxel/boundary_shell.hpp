@@ -1,0 +1,61 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "strata/mesh/indexed_mesh.hpp"
+#include "strata/slice/grid_spec.hpp"
+#include "strata/slice/slice_options.hpp"
+#include "strata/voxel/cell_class.hpp"
+
+namespace strata {
+
+/// Returns the solid bitmap (nx * ny bytes) of layer k, or nullptr when k lies outside the grid
+/// (outside counts as empty). Layers within reach_layers() of the one being classified must be
+/// available.
+using SolidLayerLookup = std::function<const std::uint8_t*(std::int64_t k)>;
+
+/// Marks the boundary shell (SPEC §2). A solid cell is Boundary when one of its 6-neighbours is
+/// empty, or when it lies in the surface layer of thickness t:
+/// - Distance: its centre is closer than t to the mesh surface (true Euclidean distance to the
+///   facets, squared distances compared with t^2).
+/// - Layers: it is within n = int(t / d) rings of cells (d the smallest cell size), the first ring
+///   being the cells with an empty 6-neighbour, each further ring the solid 6-neighbours of the
+///   one before.
+/// The mesh and grid must outlive the marker. classify() is safe to call from several threads.
+class BoundaryShell {
+ public:
+  BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, ShellMode mode, double thickness_mm);
+
+  /// How many layers on each side of k classify(k) reads.
+  std::uint32_t reach_layers() const { return reach_; }
+  /// The ring count n of the Layers mode (at least 1: cells that touch the outside are always
+  /// boundary).
+  std::uint32_t rings() const { return rings_; }
+  /// True when the Layers mode had to take the smallest of unequal cell sizes.
+  bool unequal_cell_sizes() const { return unequal_sizes_; }
+
+  /// Classifies layer k into `out` (nx * ny classes, row-major).
+  void classify(std::uint32_t k, const SolidLayerLookup& solid, std::vector<CellClass>& out) const;
+
+ private:
+  void mark_near_surface(std::uint32_t k, std::vector<CellClass>& out) const;
+  void mark_rings(std::uint32_t k, const SolidLayerLookup& solid,
+                  std::vector<CellClass>& out) const;
+
+  const IndexedMesh& mesh_;
+  GridSpec grid_;
+  ShellMode mode_;
+  double thickness_mm_;
+  std::uint32_t reach_ = 1;
+  std::uint32_t rings_ = 1;
+  bool unequal_sizes_ = false;
+  // Distance mode: facets sorted by their lowest z, with the running maximum of their highest z,
+  // so the facets within t of a plane are found by two binary searches.
+  std::vector<FacetIndex> facets_by_zmin_;
+  std::vector<double> zmin_sorted_;
+  std::vector<double> zmax_prefix_max_;
+};
+
+}  // namespace strata

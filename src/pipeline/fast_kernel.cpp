@@ -1,0 +1,43 @@
+#include <algorithm>
+
+#include "pipeline/fast_kernel_internal.hpp"
+#include "strata/contour/assemble_contours.hpp"
+#include "strata/fill/scanline_fill.hpp"
+
+namespace strata::detail {
+
+FastKernel::FastKernel(const IndexedMesh& mesh, const GridSpec& grid, const SliceOptions& options)
+    : mesh_(mesh),
+      grid_(grid),
+      options_(options),
+      ranges_(facet_layer_ranges(mesh, grid)),
+      buckets_(bucket_facets_by_first_layer(ranges_, grid.nz)) {}
+
+void FastKernel::prepare_batch(std::uint32_t k0, std::uint32_t k1) {
+  // Drop facets that end before this batch, then add those that start in it.
+  std::erase_if(active_, [&](FacetIndex f) { return ranges_.last[f] < k0; });
+  for (std::uint32_t k = k0; k < k1; ++k) {
+    for (std::uint32_t r = buckets_.offsets[k]; r < buckets_.offsets[k + 1]; ++r) {
+      active_.push_back(buckets_.facets[r]);
+    }
+  }
+}
+
+LayerGeometry FastKernel::compute_layer(std::uint32_t k) const {
+  std::vector<FacetIndex> candidates;
+  candidates.reserve(active_.size());
+  for (const FacetIndex f : active_) {
+    if (ranges_.first[f] <= k && k <= ranges_.last[f]) candidates.push_back(f);
+  }
+  // Facet order keeps every later step independent of the order of the sweep.
+  std::sort(candidates.begin(), candidates.end());
+  const LayerSegments segments = slice_layer(mesh_, candidates, grid_, k);
+  LayerGeometry geometry;
+  geometry.segments = static_cast<std::uint32_t>(segments.segments.size());
+  geometry.fill =
+      scanline_fill(mesh_, segments, grid_, options_.fill_rule, options_.scan_offset_mm, true);
+  geometry.contours = assemble_contours(segments);
+  return geometry;
+}
+
+}  // namespace strata::detail

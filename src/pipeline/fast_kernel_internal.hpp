@@ -1,0 +1,29 @@
+#pragma once
+
+#include <vector>
+
+#include "strata/pipeline/layer_kernel.hpp"
+#include "strata/slice/slice_float.hpp"
+#include "strata/slice/slice_options.hpp"
+
+namespace strata::detail {
+
+/// The fast path: double crossing points for output, exact filtered predicates for every
+/// decision, facets swept through the layers by their first layer (O(n + k + m)).
+class FastKernel final : public LayerKernel {
+ public:
+  FastKernel(const IndexedMesh& mesh, const GridSpec& grid, const SliceOptions& options);
+
+  void prepare_batch(std::uint32_t k0, std::uint32_t k1) override;
+  LayerGeometry compute_layer(std::uint32_t k) const override;
+
+ private:
+  const IndexedMesh& mesh_;
+  GridSpec grid_;
+  SliceOptions options_;
+  FacetLayerRanges ranges_;
+  FacetBuckets buckets_;
+  std::vector<FacetIndex> active_;  ///< facets whose layer range meets the current batch
+};
+
+}  // namespace strata::detail

@@ -1,0 +1,168 @@
+#include "strata/pipeline/slice_model.hpp"
+
+#include <fmt/format.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "pipeline/fast_kernel_internal.hpp"
+#include "strata/voxel/boundary_shell.hpp"
+
+namespace strata {
+
+namespace {
+
+constexpr std::size_t kMaxOpenChainReports = 1000;
+// Memory the layers of one batch may take (solid bitmaps and classes, one byte a cell each).
+constexpr double kBatchMemoryBytes = 2.0e9;
+
+void abort_all(std::span<LayerSink* const> sinks) {
+  for (LayerSink* sink : sinks) sink->abort();
+}
+
+}  // namespace
+
+Result<SliceSummary> run_slice(const IndexedMesh& mesh, const GridSpec& grid,
+                               const SliceOptions& options, LayerKernel& kernel,
+                               std::span<LayerSink* const> sinks,
+                               const ProgressCallback& progress) {
+  const auto started = std::chrono::steady_clock::now();
+  std::optional<tbb::global_control> thread_limit;
+  if (options.threads > 0) {
+    thread_limit.emplace(tbb::global_control::max_allowed_parallelism,
+                         static_cast<std::size_t>(options.threads));
+  }
+  SliceSummary summary;
+  summary.grid = grid;
+  summary.layers.resize(grid.nz);
+
+  const BoundaryShell shell(mesh, grid, options.shell_mode, options.shell_mm);
+  if (options.shell_mode == ShellMode::Layers && shell.unequal_cell_sizes()) {
+    summary.diagnostics.push_back(
+        {Severity::Warning, "shell.unequal_cell_sizes",
+         fmt::format("--shell-mode layers with unequal cell sizes ({} x {} x {} mm): rings are "
+                     "counted with the smallest, {} rings of {} mm",
+                     grid.dx, grid.dy, grid.dz, shell.rings(),
+                     std::min({grid.dx, grid.dy, grid.dz}))});
+  }
+  const std::uint32_t reach = shell.reach_layers();
+
+  SliceRunInfo run{grid, options, {}};
+  for (LayerSink* sink : sinks) {
+    if (auto ok = sink->begin(run); !ok) {
+      abort_all(sinks);
+      return ok.error();
+    }
+  }
+
+  const double layer_bytes =
+      static_cast<double>(std::max<std::uint64_t>(1, grid.cells_per_layer()));
+  const std::uint32_t batch = static_cast<std::uint32_t>(
+      std::clamp(kBatchMemoryBytes / (2.0 * layer_bytes), 1.0,
+                 static_cast<double>(std::max(1, options.batch_layers))));
+
+  std::map<std::int64_t, LayerGeometry> pending;             // computed, not yet sent to the sinks
+  std::map<std::int64_t, std::vector<std::uint8_t>> solids;  // the shell window
+  const SolidLayerLookup lookup = [&](std::int64_t q) -> const std::uint8_t* {
+    if (q < 0 || q >= static_cast<std::int64_t>(grid.nz)) return nullptr;
+    const auto it = solids.find(q);
+    return it == solids.end() ? nullptr : it->second.data();
+  };
+
+  std::uint32_t next_emit = 0;
+  std::vector<std::vector<CellClass>> classes;
+  for (std::uint32_t k0 = 0; k0 < grid.nz; k0 += batch) {
+    const std::uint32_t k1 = std::min(grid.nz, k0 + batch);
+    kernel.prepare_batch(k0, k1);
+    std::vector<LayerGeometry> computed(k1 - k0);
+    tbb::parallel_for(k0, k1, [&](std::uint32_t k) { computed[k - k0] = kernel.compute_layer(k); });
+    for (std::uint32_t k = k0; k < k1; ++k) {
+      LayerGeometry& g = computed[k - k0];
+      solids[k] = std::move(g.fill.solid);
+      pending.emplace(k, std::move(g));
+    }
+    // Layers whose shell window is complete can be classified and written.
+    const std::uint32_t emit_end = k1 == grid.nz ? grid.nz : (k1 > reach ? k1 - reach : 0);
+    if (emit_end <= next_emit) continue;
+    classes.resize(emit_end - next_emit);
+    tbb::parallel_for(next_emit, emit_end,
+                      [&](std::uint32_t k) { shell.classify(k, lookup, classes[k - next_emit]); });
+    for (std::uint32_t k = next_emit; k < emit_end; ++k) {
+      auto node = pending.extract(k);
+      LayerGeometry& g = node.mapped();
+      const std::vector<CellClass>& cells = classes[k - next_emit];
+      LayerStats& stats = summary.layers[k];
+      stats.layer = k;
+      stats.z_mm = grid.zk(k);
+      stats.segments = g.segments;
+      for (const Contour& loop : g.contours.loops) {
+        if (loop.kind == LoopKind::Outer) ++stats.outer_loops;
+        if (loop.kind == LoopKind::Hole) ++stats.holes;
+        if (loop.kind == LoopKind::Open) {
+          ++stats.open_chains;
+          if (summary.open_chain_reports.size() < kMaxOpenChainReports) {
+            summary.open_chain_reports.push_back(
+                {k, loop.points.front(), loop.points.back(),
+                 static_cast<std::uint32_t>(loop.points.size() - 1)});
+          }
+        }
+      }
+      stats.contour_area_mm2 = g.contours.area_mm2;
+      for (const CellClass c : cells) {
+        if (c == CellClass::Interior) ++stats.interior;
+        if (c == CellClass::Boundary) ++stats.boundary;
+      }
+      summary.class_counts[1] += stats.interior;
+      summary.class_counts[2] += stats.boundary;
+      summary.segments += g.segments;
+      summary.open_chains += stats.open_chains;
+      summary.exact_fallbacks += g.fill.exact_fallbacks;
+      summary.contour_volume_mm3 += stats.contour_area_mm2 * grid.dz;
+      const LayerResult result{k, grid.zk(k), cells, g.contours, g.fill.hatches};
+      for (LayerSink* sink : sinks) {
+        if (auto ok = sink->add_layer(result); !ok) {
+          abort_all(sinks);
+          return ok.error();
+        }
+      }
+      if (progress) progress(k + 1, grid.nz);
+    }
+    next_emit = emit_end;
+    // Keep only the solid layers the next classifications can still reach.
+    const std::int64_t keep_from = static_cast<std::int64_t>(next_emit) - reach;
+    while (!solids.empty() && solids.begin()->first < keep_from) solids.erase(solids.begin());
+  }
+
+  for (LayerSink* sink : sinks) {
+    if (auto ok = sink->finish(); !ok) {
+      abort_all(sinks);
+      return ok.error();
+    }
+  }
+  summary.class_counts[0] = grid.cell_count() - summary.class_counts[1] - summary.class_counts[2];
+  summary.solid_volume_mm3 =
+      static_cast<double>(summary.class_counts[1] + summary.class_counts[2]) * grid.dx * grid.dy *
+      grid.dz;
+  summary.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return summary;
+}
+
+Result<SliceSummary> slice_model(const IndexedMesh& mesh, const GridSpec& grid,
+                                 const SliceOptions& options, std::span<LayerSink* const> sinks,
+                                 const ProgressCallback& progress) {
+  if (options.fill_rule == FillRule::Winding) {
+    return Error{ErrorCode::Usage,
+                 "--fill-rule winding is not available in this version; use nonzero or evenodd",
+                 {}};
+  }
+  detail::FastKernel kernel(mesh, grid, options);
+  return run_slice(mesh, grid, options, kernel, sinks, progress);
+}
+
+}  // namespace strata

@@ -1,0 +1,83 @@
+#pragma once
+
+// The predicates of SPEC §2's exact inside rule. A crossing point P lies on a mesh edge
+// (lo -> hi) with lo.z < z <= hi.z; with w = hi.z - lo.z > 0 its coordinates are
+//   P.x = lo.x + (z - lo.z) * (hi.x - lo.x) / w   (likewise y),
+// so every comparison of P with a grid value c multiplies out to a sign of
+//   (lo.x - c) * w + (z - lo.z) * (hi.x - lo.x),
+// a polynomial in the input coordinates and the grid's double values, evaluated exactly.
+
+#include "slice/filtered_sign_internal.hpp"
+#include "strata/mesh/vec3.hpp"
+
+namespace strata::detail {
+
+/// Sign of (P.y - y) for the crossing P of edge lo -> hi with plane z.
+inline int crossing_y_sign(const Vec3& lo, const Vec3& hi, double z, double y) {
+  // P.y lies between lo.y and hi.y: most calls are decided without arithmetic.
+  if (lo.y > y && hi.y > y) return 1;
+  if (lo.y < y && hi.y < y) return -1;
+  if (lo.y == y && hi.y == y) return 0;
+  return filtered_sign([&](auto tag) {
+    using N = decltype(tag);
+    N r = (N(lo.y) - N(y)) * (N(hi.z) - N(lo.z)) + (N(z) - N(lo.z)) * (N(hi.y) - N(lo.y));
+    return r;
+  });
+}
+
+/// Sign of (P.x - x) for the crossing P of edge lo -> hi with plane z.
+inline int crossing_x_sign(const Vec3& lo, const Vec3& hi, double z, double x) {
+  if (lo.x > x && hi.x > x) return 1;
+  if (lo.x < x && hi.x < x) return -1;
+  if (lo.x == x && hi.x == x) return 0;
+  return filtered_sign([&](auto tag) {
+    using N = decltype(tag);
+    N r = (N(lo.x) - N(x)) * (N(hi.z) - N(lo.z)) + (N(z) - N(lo.z)) * (N(hi.x) - N(lo.x));
+    return r;
+  });
+}
+
+/// Sign of (X - xc), X being where segment PQ meets the line y = yr, for P = crossing of edge
+/// p_lo -> p_hi and Q = crossing of q_lo -> q_hi with plane z.
+/// @pre P.y < yr <= Q.y (P strictly below the line, Q on or above it).
+inline int scanline_crossing_x_sign(const Vec3& p_lo, const Vec3& p_hi, const Vec3& q_lo,
+                                    const Vec3& q_hi, double z, double yr, double xc) {
+  // X is a convex combination of P.x and Q.x, each of its edge's end points.
+  const double min_x = std::fmin(std::fmin(p_lo.x, p_hi.x), std::fmin(q_lo.x, q_hi.x));
+  const double max_x = std::fmax(std::fmax(p_lo.x, p_hi.x), std::fmax(q_lo.x, q_hi.x));
+  if (min_x > xc) return 1;
+  if (max_x < xc) return -1;
+  // With w = edge height: (X - xc) * (Q.y - P.y) * wP * wQ = NPx * NQy - NQx * NPy, where
+  // NPx = (P.x - xc) * wP and so on; Q.y - P.y > 0 and w > 0 by the precondition.
+  return filtered_sign([&](auto tag) {
+    using N = decltype(tag);
+    const N wp = N(p_hi.z) - N(p_lo.z);
+    const N tp = N(z) - N(p_lo.z);
+    const N wq = N(q_hi.z) - N(q_lo.z);
+    const N tq = N(z) - N(q_lo.z);
+    const N npx = (N(p_lo.x) - N(xc)) * wp + tp * (N(p_hi.x) - N(p_lo.x));
+    const N npy = (N(p_lo.y) - N(yr)) * wp + tp * (N(p_hi.y) - N(p_lo.y));
+    const N nqx = (N(q_lo.x) - N(xc)) * wq + tq * (N(q_hi.x) - N(q_lo.x));
+    const N nqy = (N(q_lo.y) - N(yr)) * wq + tq * (N(q_hi.y) - N(q_lo.y));
+    N r = npx * nqy - nqx * npy;
+    return r;
+  });
+}
+
+/// Sign of the x component of the facet normal n = (b - a) x (c - a).
+inline int normal_x_sign(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return filtered_sign([&](auto tag) {
+    using N = decltype(tag);
+    N r = (N(b.y) - N(a.y)) * (N(c.z) - N(a.z)) - (N(b.z) - N(a.z)) * (N(c.y) - N(a.y));
+    return r;
+  });
+}
+
+/// The crossing point of edge lo -> hi with plane z, rounded to double (for output and for
+/// first guesses only; decisions use the predicates above).
+inline Point2 crossing_point(const Vec3& lo, const Vec3& hi, double z) {
+  const double t = (z - lo.z) / (hi.z - lo.z);
+  return {lo.x + t * (hi.x - lo.x), lo.y + t * (hi.y - lo.y)};
+}
+
+}  // namespace strata::detail

@@ -1,0 +1,221 @@
+#include "strata/voxel/boundary_shell.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <numeric>
+
+#include "voxel/point_triangle_distance_internal.hpp"
+
+namespace strata {
+
+namespace {
+
+/// Cells within `slack` outside [lo, hi] along one axis: the conservative index range of centres
+/// base + (i + 0.5) * d that may lie in [lo, hi].
+std::pair<std::int64_t, std::int64_t> centre_range(double base, double d, std::uint32_t n,
+                                                   double lo, double hi) {
+  const double first = std::floor((lo - base) / d - 0.5) - 1.0;
+  const double last = std::ceil((hi - base) / d - 0.5) + 1.0;
+  const std::int64_t i0 = static_cast<std::int64_t>(std::max(0.0, first));
+  const std::int64_t i1 =
+      static_cast<std::int64_t>(std::min(static_cast<double>(n) - 1.0, std::max(-1.0, last)));
+  return {i0, i1};
+}
+
+/// The x-y bounding box of the part of triangle abc within z in [z_lo, z_hi]; false if none.
+bool slab_footprint(const Vec3& a, const Vec3& b, const Vec3& c, double z_lo, double z_hi,
+                    double box[4]) {
+  box[0] = box[1] = std::numeric_limits<double>::infinity();
+  box[2] = box[3] = -std::numeric_limits<double>::infinity();
+  bool any = false;
+  const auto add = [&](double x, double y) {
+    box[0] = std::min(box[0], x);
+    box[1] = std::min(box[1], y);
+    box[2] = std::max(box[2], x);
+    box[3] = std::max(box[3], y);
+    any = true;
+  };
+  const Vec3* v[3] = {&a, &b, &c};
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& p = *v[i];
+    const Vec3& q = *v[(i + 1) % 3];
+    if (p.z >= z_lo && p.z <= z_hi) add(p.x, p.y);
+    for (const double z : {z_lo, z_hi}) {
+      if ((p.z < z && q.z > z) || (p.z > z && q.z < z)) {
+        const double s = (z - p.z) / (q.z - p.z);
+        add(p.x + s * (q.x - p.x), p.y + s * (q.y - p.y));
+      }
+    }
+  }
+  return any;
+}
+
+}  // namespace
+
+BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, ShellMode mode,
+                             double thickness_mm)
+    : mesh_(mesh), grid_(grid), mode_(mode), thickness_mm_(thickness_mm) {
+  if (mode_ == ShellMode::Layers) {
+    const double d = std::min({grid_.dx, grid_.dy, grid_.dz});
+    unequal_sizes_ = !(grid_.dx == grid_.dy && grid_.dy == grid_.dz);
+    const double n = std::floor(thickness_mm_ / d);
+    rings_ = static_cast<std::uint32_t>(std::clamp(n, 1.0, 255.0));
+    reach_ = rings_;
+    return;
+  }
+  reach_ = 1;
+  if (!(thickness_mm_ > 0.0)) return;
+  facets_by_zmin_.resize(mesh_.triangles.size());
+  std::iota(facets_by_zmin_.begin(), facets_by_zmin_.end(), FacetIndex{0});
+  std::vector<double> zmin(mesh_.triangles.size());
+  std::vector<double> zmax(mesh_.triangles.size());
+  for (std::size_t f = 0; f < mesh_.triangles.size(); ++f) {
+    const auto& t = mesh_.triangles[f];
+    zmin[f] = std::min({mesh_.vertices[t[0]].z, mesh_.vertices[t[1]].z, mesh_.vertices[t[2]].z});
+    zmax[f] = std::max({mesh_.vertices[t[0]].z, mesh_.vertices[t[1]].z, mesh_.vertices[t[2]].z});
+  }
+  std::sort(facets_by_zmin_.begin(), facets_by_zmin_.end(),
+            [&](FacetIndex a, FacetIndex b) { return zmin[a] < zmin[b]; });
+  zmin_sorted_.resize(facets_by_zmin_.size());
+  zmax_prefix_max_.resize(facets_by_zmin_.size());
+  double running = -std::numeric_limits<double>::infinity();
+  for (std::size_t r = 0; r < facets_by_zmin_.size(); ++r) {
+    zmin_sorted_[r] = zmin[facets_by_zmin_[r]];
+    running = std::max(running, zmax[facets_by_zmin_[r]]);
+    zmax_prefix_max_[r] = running;
+  }
+}
+
+void BoundaryShell::classify(std::uint32_t k, const SolidLayerLookup& solid,
+                             std::vector<CellClass>& out) const {
+  const std::uint32_t nx = grid_.nx;
+  const std::uint32_t ny = grid_.ny;
+  const std::uint8_t* here = solid(k);
+  const std::uint8_t* below = solid(static_cast<std::int64_t>(k) - 1);
+  const std::uint8_t* above = solid(static_cast<std::int64_t>(k) + 1);
+  out.assign(grid_.cells_per_layer(), CellClass::Empty);
+  // Solid cells, and the first ring: a solid cell with an empty 6-neighbour (outside the grid
+  // counts as empty).
+  for (std::uint32_t j = 0; j < ny; ++j) {
+    for (std::uint32_t i = 0; i < nx; ++i) {
+      const std::size_t c = std::size_t{j} * nx + i;
+      if (!here[c]) continue;
+      const bool touches_outside = i == 0 || i + 1 == nx || j == 0 || j + 1 == ny || !here[c - 1] ||
+                                   !here[c + 1] || !here[c - nx] || !here[c + nx] ||
+                                   below == nullptr || !below[c] || above == nullptr || !above[c];
+      out[c] = touches_outside ? CellClass::Boundary : CellClass::Interior;
+    }
+  }
+  if (mode_ == ShellMode::Distance) {
+    mark_near_surface(k, out);
+  } else if (rings_ > 1) {
+    mark_rings(k, solid, out);
+  }
+}
+
+void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& out) const {
+  const double t = thickness_mm_;
+  if (!(t > 0.0) || facets_by_zmin_.empty()) return;
+  const double z = grid_.zk(k);
+  const Vec3 centre_z{0.0, 0.0, z};
+  // Facets whose z-range meets [z - t, z + t]; the slab is widened a little so that rounding in
+  // these double bounds can only add candidates, never drop one (the predicate decides).
+  const double slack = t * 1e-9 + std::fabs(z) * 1e-15;
+  const double z_lo = z - t - slack;
+  const double z_hi = z + t + slack;
+  const std::size_t end =
+      std::upper_bound(zmin_sorted_.begin(), zmin_sorted_.end(), z_hi) - zmin_sorted_.begin();
+  // Skip the leading facets that all end below the slab (their running max of zmax is too low).
+  const std::size_t begin =
+      std::lower_bound(zmax_prefix_max_.begin(), zmax_prefix_max_.begin() + end, z_lo) -
+      zmax_prefix_max_.begin();
+  const std::uint32_t nx = grid_.nx;
+  double box[4];
+  for (std::size_t r = begin; r < end; ++r) {
+    const auto& tri = mesh_.triangles[facets_by_zmin_[r]];
+    const Vec3& a = mesh_.vertices[tri[0]];
+    const Vec3& b = mesh_.vertices[tri[1]];
+    const Vec3& c = mesh_.vertices[tri[2]];
+    if (std::max({a.z, b.z, c.z}) < z_lo) continue;
+    if (!slab_footprint(a, b, c, z_lo, z_hi, box)) continue;
+    const double grow = t * (1.0 + 1e-9);
+    const auto [i0, i1] = centre_range(grid_.x0, grid_.dx, grid_.nx, box[0] - grow, box[2] + grow);
+    const auto [j0, j1] = centre_range(grid_.y0, grid_.dy, grid_.ny, box[1] - grow, box[3] + grow);
+    for (std::int64_t j = j0; j <= j1; ++j) {
+      const double yc = grid_.yc(static_cast<std::uint32_t>(j));
+      for (std::int64_t i = i0; i <= i1; ++i) {
+        CellClass& cell = out[static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i)];
+        if (cell != CellClass::Interior) continue;
+        const Vec3 p{grid_.xc(static_cast<std::uint32_t>(i)), yc, centre_z.z};
+        if (detail::triangle_closer_than(p, a, b, c, t)) cell = CellClass::Boundary;
+      }
+    }
+  }
+}
+
+void BoundaryShell::mark_rings(std::uint32_t k, const SolidLayerLookup& solid,
+                               std::vector<CellClass>& out) const {
+  // Graph distance through solid cells from the first ring; a path shorter than n rings from
+  // layer k stays within layers k - (n - 1) .. k + (n - 1).
+  const std::int64_t n = rings_;
+  const std::int64_t lo = std::max<std::int64_t>(0, static_cast<std::int64_t>(k) - (n - 1));
+  const std::int64_t hi =
+      std::min<std::int64_t>(grid_.nz - 1, static_cast<std::int64_t>(k) + (n - 1));
+  const std::size_t layer_cells = grid_.cells_per_layer();
+  const std::uint32_t nx = grid_.nx;
+  const std::uint32_t ny = grid_.ny;
+  const std::size_t depth = static_cast<std::size_t>(hi - lo + 1);
+  std::vector<std::uint8_t> ring(depth * layer_cells, 0);
+  std::deque<std::size_t> frontier;
+  for (std::int64_t q = lo; q <= hi; ++q) {
+    const std::uint8_t* here = solid(q);
+    const std::uint8_t* below = solid(q - 1);
+    const std::uint8_t* above = solid(q + 1);
+    const std::size_t base = static_cast<std::size_t>(q - lo) * layer_cells;
+    for (std::uint32_t j = 0; j < ny; ++j) {
+      for (std::uint32_t i = 0; i < nx; ++i) {
+        const std::size_t c = std::size_t{j} * nx + i;
+        if (!here[c]) continue;
+        const bool touches_outside = i == 0 || i + 1 == nx || j == 0 || j + 1 == ny ||
+                                     !here[c - 1] || !here[c + 1] || !here[c - nx] ||
+                                     !here[c + nx] || below == nullptr || !below[c] ||
+                                     above == nullptr || !above[c];
+        if (touches_outside) {
+          ring[base + c] = 1;
+          frontier.push_back(base + c);
+        }
+      }
+    }
+  }
+  while (!frontier.empty()) {
+    const std::size_t at = frontier.front();
+    frontier.pop_front();
+    const std::uint8_t r = ring[at];
+    if (r >= n) continue;
+    const std::size_t q = at / layer_cells;
+    const std::size_t c = at % layer_cells;
+    const std::uint32_t i = static_cast<std::uint32_t>(c % nx);
+    const std::uint32_t j = static_cast<std::uint32_t>(c / nx);
+    const auto visit = [&](std::size_t q2, std::size_t c2) {
+      const std::size_t idx = q2 * layer_cells + c2;
+      if (ring[idx] != 0) return;
+      if (!solid(lo + static_cast<std::int64_t>(q2))[c2]) return;
+      ring[idx] = static_cast<std::uint8_t>(r + 1);
+      frontier.push_back(idx);
+    };
+    if (i > 0) visit(q, c - 1);
+    if (i + 1 < nx) visit(q, c + 1);
+    if (j > 0) visit(q, c - nx);
+    if (j + 1 < ny) visit(q, c + nx);
+    if (q > 0) visit(q - 1, c);
+    if (q + 1 < depth) visit(q + 1, c);
+  }
+  const std::size_t base =
+      static_cast<std::size_t>(static_cast<std::int64_t>(k) - lo) * layer_cells;
+  for (std::size_t c = 0; c < layer_cells; ++c) {
+    if (out[c] == CellClass::Interior && ring[base + c] != 0) out[c] = CellClass::Boundary;
+  }
+}
+
+}  // namespace strata

@@ -1,0 +1,104 @@
+#include "strata/fill/scanline_fill.hpp"
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+#include "../slice/box_mesh_for_tests.hpp"
+#include "strata/slice/slice_float.hpp"
+
+namespace strata {
+namespace {
+
+LayerFill fill_layer(const IndexedMesh& mesh, const GridSpec& grid, std::uint32_t k,
+                     FillRule rule = FillRule::NonZero, double offset = 0.0) {
+  std::vector<FacetIndex> all(mesh.triangles.size());
+  std::iota(all.begin(), all.end(), FacetIndex{0});
+  const LayerSegments segments = slice_layer(mesh, all, grid, k);
+  return scanline_fill(mesh, segments, grid, rule, offset, true);
+}
+
+GridSpec unit_grid(std::uint32_t n) {
+  GridSpec g;
+  g.nx = g.ny = g.nz = n;
+  return g;
+}
+
+int count_solid(const LayerFill& fill) {
+  return static_cast<int>(std::count(fill.solid.begin(), fill.solid.end(), 1));
+}
+
+TEST(ScanlineFill, BoxAlignedWithGridFillsItsCells) {
+  const IndexedMesh box = testing::indexed_box({1, 1, 1}, {4, 3, 5});
+  const GridSpec grid = unit_grid(6);
+  for (std::uint32_t k = 0; k < 6; ++k) {
+    const LayerFill fill = fill_layer(box, grid, k);
+    const bool layer_inside = k >= 1 && k < 5;
+    EXPECT_EQ(count_solid(fill), layer_inside ? 3 * 2 : 0) << "layer " << k;
+    if (layer_inside) {
+      for (std::uint32_t j = 0; j < 6; ++j) {
+        for (std::uint32_t i = 0; i < 6; ++i) {
+          const bool expected = i >= 1 && i < 4 && j >= 1 && j < 3;
+          EXPECT_EQ(fill.solid[j * 6 + i], expected ? 1 : 0) << i << "," << j;
+        }
+      }
+    }
+  }
+}
+
+TEST(ScanlineFill, WallThroughCellCentreTakesMaterialOnPlusXSide) {
+  // Walls at x = 1.5 and x = 3.5 pass exactly through cell centres of columns 1 and 3.
+  const IndexedMesh box = testing::indexed_box({1.5, 0, 0}, {3.5, 1, 1});
+  const LayerFill fill = fill_layer(box, unit_grid(5), 0);
+  // Column 1's centre lies on the left wall: material is on its +x side, so it is solid; column
+  // 3's centre lies on the right wall with empty space on +x, so it is empty.
+  EXPECT_EQ(fill.solid[1], 1);
+  EXPECT_EQ(fill.solid[2], 1);
+  EXPECT_EQ(fill.solid[3], 0);
+}
+
+TEST(ScanlineFill, FaceOnScanlineTakesMaterialBelowInY) {
+  // The box's faces y = 0.5 and y = 2.5 lie exactly on the scanlines of rows 0 and 2.
+  const IndexedMesh box = testing::indexed_box({0, 0.5, 0}, {1, 2.5, 1});
+  const LayerFill fill = fill_layer(box, unit_grid(4), 0);
+  // A point on the line counts as above: row 0 (on the lower face) is empty, row 2 (on the
+  // upper face) takes the material below it.
+  EXPECT_EQ(fill.solid[0 * 4 + 0], 0);
+  EXPECT_EQ(fill.solid[1 * 4 + 0], 1);
+  EXPECT_EQ(fill.solid[2 * 4 + 0], 1);
+  EXPECT_EQ(fill.solid[3 * 4 + 0], 0);
+}
+
+TEST(ScanlineFill, OverlappingBoxesDifferBetweenNonZeroAndEvenOdd) {
+  IndexedMesh two = testing::indexed_box({0, 0, 0}, {3, 1, 1});
+  testing::append_mesh(two, testing::indexed_box({1, 0, 0}, {4, 1, 1}));
+  const GridSpec grid = unit_grid(4);
+  const LayerFill nonzero = fill_layer(two, grid, 0, FillRule::NonZero);
+  const LayerFill evenodd = fill_layer(two, grid, 0, FillRule::EvenOdd);
+  EXPECT_EQ(
+      (std::vector<int>{nonzero.solid[0], nonzero.solid[1], nonzero.solid[2], nonzero.solid[3]}),
+      (std::vector<int>{1, 1, 1, 1}));
+  EXPECT_EQ(
+      (std::vector<int>{evenodd.solid[0], evenodd.solid[1], evenodd.solid[2], evenodd.solid[3]}),
+      (std::vector<int>{1, 0, 0, 1}));
+}
+
+TEST(ScanlineFill, HatchesCoverTheSolidSpanOfEachRow) {
+  const IndexedMesh box = testing::indexed_box({0.25, 0, 0}, {2.75, 2, 1});
+  const LayerFill fill = fill_layer(box, unit_grid(3), 0);
+  ASSERT_EQ(fill.hatches.size(), 2u);
+  EXPECT_EQ(fill.hatches[0].row, 0u);
+  EXPECT_DOUBLE_EQ(fill.hatches[0].x_start, 0.25);
+  EXPECT_DOUBLE_EQ(fill.hatches[0].x_end, 2.75);
+}
+
+TEST(ScanlineFill, ScanOffsetMovesTheRowOffAFace) {
+  const IndexedMesh box = testing::indexed_box({0, 0.5, 0}, {1, 2.5, 1});
+  const LayerFill fill = fill_layer(box, unit_grid(4), 0, FillRule::NonZero, 0.0001);
+  // Shifted up by 0.1 um, row 0's scanline is inside the box and row 2's is above it.
+  EXPECT_EQ(fill.solid[0 * 4 + 0], 1);
+  EXPECT_EQ(fill.solid[2 * 4 + 0], 0);
+}
+
+}  // namespace
+}  // namespace strata
