@@ -1,0 +1,24 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace strata::cli {
+
+/// Exit codes of SPEC §4.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitBadInput = 1;
+inline constexpr int kExitUsage = 2;
+inline constexpr int kExitInternal = 3;
+inline constexpr int kExitCellsDiffer = 4;
+
+/// What a subcommand does once the command line has been parsed; returns the exit code.
+using CommandRunner = std::function<int()>;
+
+/// Each register_* adds its subcommand to `app`; when that subcommand is chosen, parsing sets
+/// `runner` to its action.
+void register_slice_command(CLI::App& app, CommandRunner& runner);
+void register_info_command(CLI::App& app, CommandRunner& runner);
+void register_check_command(CLI::App& app, CommandRunner& runner);
+
+}  // namespace strata::cli

@@ -1,0 +1,85 @@
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "cli/command.hpp"
+#include "cli/exit_code.hpp"
+#include "strata/export/cells_reader.hpp"
+
+namespace strata::cli {
+
+namespace {
+
+struct InfoOptions {
+  std::string file;
+  bool per_layer = false;
+  bool json = false;
+};
+
+int run_info(const InfoOptions& o) {
+  auto summary = io::summarize_cells(o.file);
+  if (!summary) return report_error(summary.error());
+  const auto& h = summary->header;
+  const GridSpec& g = h.grid;
+  const auto& c = summary->class_counts;
+  const double cell_volume = g.dx * g.dy * g.dz;
+  if (o.json) {
+    nlohmann::json j;
+    j["file"] = o.file;
+    j["grid"] = {{"nx", g.nx},
+                 {"ny", g.ny},
+                 {"nz", g.nz},
+                 {"origin_mm", {g.x0, g.y0, g.z0}},
+                 {"spacing_mm", {g.dx, g.dy, g.dz}}};
+    j["shell_mm"] = h.shell_mm;
+    j["cells"] = {{"empty", c[0]}, {"interior", c[1]}, {"boundary", c[2]}};
+    j["solid_volume_mm3"] = static_cast<double>(c[1] + c[2]) * cell_volume;
+    if (o.per_layer) {
+      nlohmann::json layers = nlohmann::json::array();
+      for (const auto& l : summary->layer_counts) layers.push_back({l[0], l[1], l[2]});
+      j["layers"] = layers;
+    }
+    std::fputs((j.dump(2) + "\n").c_str(), stdout);
+    return kExitOk;
+  }
+  std::string out;
+  out += fmt::format("file     {}\n", o.file);
+  out += fmt::format("grid     {} x {} x {} cells ({} in all)\n", g.nx, g.ny, g.nz, g.cell_count());
+  out += fmt::format("origin   ({}, {}, {}) mm\n", g.x0, g.y0, g.z0);
+  out += fmt::format("spacing  {} x {} x {} mm\n", g.dx, g.dy, g.dz);
+  out += fmt::format("shell    {} mm\n", h.shell_mm);
+  out +=
+      fmt::format("cells    {} empty (00), {} interior (01), {} boundary (11)\n", c[0], c[1], c[2]);
+  out += fmt::format("volume   {:.6g} mm3 solid\n", static_cast<double>(c[1] + c[2]) * cell_volume);
+  if (summary->solid_bounds) {
+    const auto& b = *summary->solid_bounds;
+    out += fmt::format("solid    i {}..{}, j {}..{}, k {}..{}\n", b.i_min, b.i_max, b.j_min,
+                       b.j_max, b.k_min, b.k_max);
+  }
+  if (o.per_layer) {
+    out += "layer        z       empty    interior    boundary\n";
+    for (std::size_t k = 0; k < summary->layer_counts.size(); ++k) {
+      const auto& l = summary->layer_counts[k];
+      out += fmt::format("{:5} {:>10.6g} {:>11} {:>11} {:>11}\n", k,
+                         g.zk(static_cast<std::uint32_t>(k)), l[0], l[1], l[2]);
+    }
+  }
+  std::fputs(out.c_str(), stdout);
+  return kExitOk;
+}
+
+}  // namespace
+
+void register_info_command(CLI::App& app, CommandRunner& runner) {
+  auto options = std::make_shared<InfoOptions>();
+  CLI::App* cmd =
+      app.add_subcommand("info", "Read a cells file (.cells or .cells.txt) back and summarise it");
+  cmd->add_option("FILE", options->file, "A .cells or .cells.txt file")->required();
+  cmd->add_flag("--layers", options->per_layer, "Also list the counts of every layer");
+  cmd->add_flag("--json", options->json, "Print JSON instead of text");
+  cmd->callback([options, &runner] { runner = [options] { return run_info(*options); }; });
+}
+
+}  // namespace strata::cli

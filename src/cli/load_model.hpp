@@ -1,0 +1,28 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "strata/core/result.hpp"
+#include "strata/mesh/indexed_mesh.hpp"
+#include "strata/mesh/triangle_soup.hpp"
+
+namespace strata::cli {
+
+/// A model read and welded, with what the CLI reports about it.
+struct LoadedModel {
+  std::filesystem::path path;
+  std::string stem;  ///< file name without its extensions (.stl, .stl.gz)
+  TriangleSoup soup;
+  IndexedMesh mesh;
+  double seconds_read = 0.0;
+  double seconds_weld = 0.0;
+};
+
+/// Reads and welds a model; Error{BadInput} names the file.
+Result<LoadedModel> load_model(const std::filesystem::path& path);
+
+/// The model's stem: "part.stl.gz" -> "part".
+std::string model_stem(const std::filesystem::path& path);
+
+}  // namespace strata::cli

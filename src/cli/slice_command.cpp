@@ -1,0 +1,219 @@
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <sstream>
+
+#include "cli/command.hpp"
+#include "cli/exit_code.hpp"
+#include "cli/load_model.hpp"
+#include "cli/progress.hpp"
+#include "cli/slice_cli_options.hpp"
+#include "cli/slice_report.hpp"
+#include "strata/diagnose/diagnose_mesh.hpp"
+#include "strata/export/cells_writer.hpp"
+#include "strata/export/cli_writer.hpp"
+#include "strata/export/output_file.hpp"
+#include "strata/export/png_stack_writer.hpp"
+#include "strata/export/svg_writer.hpp"
+#include "strata/pipeline/slice_model.hpp"
+
+namespace strata::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::set<std::string> kFormats = {"cells", "cells-ascii", "png", "svg",
+                                        "cli",   "cli-binary",  "json"};
+
+struct SliceCommandOptions {
+  std::string model;
+  std::string output_dir;
+  std::string formats = "cells,png,json";
+  std::string kernel = "fast";
+  SliceCliOptions slice;
+  bool quiet = false;
+};
+
+Result<std::set<std::string>> parse_formats(const std::string& list) {
+  std::set<std::string> formats;
+  std::stringstream in(list);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    if (item.empty()) continue;
+    if (!kFormats.count(item)) {
+      return Error{ErrorCode::Usage,
+                   fmt::format("--format: unknown format '{}' (known: cells, cells-ascii, png, "
+                               "svg, cli, cli-binary, json)",
+                               item),
+                   {}};
+    }
+    formats.insert(item);
+  }
+  if (formats.empty()) return Error{ErrorCode::Usage, "--format: no format given", {}};
+  return formats;
+}
+
+std::string with_thousands(std::uint64_t n) {
+  std::string digits = std::to_string(n);
+  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3) digits.insert(i, ",");
+  return digits;
+}
+
+int run_slice(const SliceCommandOptions& o) {
+  using Clock = std::chrono::steady_clock;
+  const auto started = Clock::now();
+  auto options = to_slice_options(o.slice);
+  if (!options) return report_error(options.error());
+  auto formats = parse_formats(o.formats);
+  if (!formats) return report_error(formats.error());
+  if (o.kernel != "fast") {
+    return report_error(Error{
+        ErrorCode::Usage, "--kernel exact is not available in this build; use --kernel fast", {}});
+  }
+
+  auto model = load_model(o.model);
+  if (!model) return report_error(model.error());
+  for (const auto& d : model->soup.diagnostics) {
+    std::fprintf(stderr, "strata: warning: %s\n", d.message.c_str());
+  }
+  auto grid = make_grid(model->mesh.bounds(), options->grid);
+  if (!grid) return report_error(grid.error());
+
+  const fs::path dir =
+      o.output_dir.empty() ? fs::path(model->stem + "-strata") : fs::path(o.output_dir);
+  const std::string& stem = model->stem;
+  std::error_code ec;
+  const bool dir_existed = fs::exists(dir, ec);
+  if (dir_existed && !fs::is_directory(dir, ec)) {
+    return report_error(
+        Error{ErrorCode::Usage, "the output path exists and is not a folder", dir.string()});
+  }
+
+  std::vector<std::unique_ptr<LayerSink>> owned;
+  std::vector<std::string> written;
+  if (formats->count("cells")) {
+    owned.push_back(io::make_cells_writer(dir / (stem + ".cells"), io::CellsEncoding::Binary));
+    written.push_back(stem + ".cells");
+  }
+  if (formats->count("cells-ascii")) {
+    owned.push_back(io::make_cells_writer(dir / (stem + ".cells.txt"), io::CellsEncoding::Ascii));
+    written.push_back(stem + ".cells.txt");
+  }
+  if (formats->count("png")) {
+    owned.push_back(io::make_png_stack_writer(dir, stem));
+    written.push_back(fmt::format("png/ ({} layers)", grid->nz));
+  }
+  if (formats->count("svg")) {
+    owned.push_back(io::make_svg_writer(dir, stem));
+    written.push_back(fmt::format("svg/ ({} layers)", grid->nz));
+  }
+  if (formats->count("cli")) {
+    owned.push_back(io::make_cli_writer(dir / (stem + ".cli"), io::CliEncoding::Ascii));
+    written.push_back(stem + ".cli");
+  }
+  if (formats->count("cli-binary")) {
+    owned.push_back(io::make_cli_writer(dir / (stem + ".bin.cli"), io::CliEncoding::Binary));
+    written.push_back(stem + ".bin.cli");
+  }
+  std::vector<LayerSink*> sinks;
+  for (auto& s : owned) sinks.push_back(s.get());
+
+  diagnose::DiagnoseOptions diagnose_options;
+  diagnose_options.check_self_intersections = false;
+  diagnose_options.near_vertex_mm = 0.0;
+  const diagnose::MeshReport mesh_report =
+      diagnose::diagnose_mesh(model->mesh, model->soup, diagnose_options);
+
+  Result<SliceSummary> summary = Error{ErrorCode::Internal, "not run", {}};
+  {
+    ProgressLine progress("slicing " + model->path.filename().string());
+    summary =
+        slice_model(model->mesh, *grid, *options, sinks,
+                    [&](std::uint32_t done, std::uint32_t total) { progress.update(done, total); });
+  }
+  const auto remove_dir_if_we_made_it = [&] {
+    if (!dir_existed && fs::is_empty(dir, ec)) fs::remove(dir, ec);
+  };
+  if (!summary) {
+    remove_dir_if_we_made_it();
+    return report_error(summary.error());
+  }
+  const double seconds_total = std::chrono::duration<double>(Clock::now() - started).count();
+  if (formats->count("json")) {
+    const auto report =
+        slice_report_json(*model, mesh_report, *options, o.kernel, *summary, seconds_total);
+    fs::create_directories(dir, ec);
+    if (auto ok = io::write_text_file(dir / (stem + ".json"), report.dump(2) + "\n"); !ok) {
+      return report_error(ok.error());
+    }
+    written.push_back(stem + ".json");
+  }
+  for (const auto& d : summary->diagnostics) {
+    std::fprintf(stderr, "strata: warning: %s\n", d.message.c_str());
+  }
+  if (o.quiet) return kExitOk;
+
+  const SliceSummary& s = *summary;
+  const GridSpec& g = s.grid;
+  std::string out;
+  out += fmt::format("model   {} ({}, {} facets, {} vertices)\n", model->path.string(),
+                     model->soup.format, with_thousands(model->mesh.triangles.size()),
+                     with_thousands(model->mesh.vertices.size()));
+  out += fmt::format(
+      "mesh    {} (open edges {}, non-manifold edges {}, degenerate facets {}, duplicate facets "
+      "{})\n",
+      diagnose::verdict_name(mesh_report.verdict), mesh_report.boundary_edges.count,
+      mesh_report.non_manifold_edges.count, mesh_report.degenerate_facets.count,
+      mesh_report.duplicate_facets.count);
+  out += fmt::format("grid    {} x {} x {} cells of {} x {} x {} mm, origin ({}, {}, {})\n", g.nx,
+                     g.ny, g.nz, g.dx, g.dy, g.dz, g.x0, g.y0, g.z0);
+  out += fmt::format("rule    fill {}, shell {} mm ({}), scan offset {} mm\n",
+                     to_string(options->fill_rule), options->shell_mm,
+                     to_string(options->shell_mode), options->scan_offset_mm);
+  out +=
+      fmt::format("cells   {} empty, {} interior, {} boundary\n", with_thousands(s.class_counts[0]),
+                  with_thousands(s.class_counts[1]), with_thousands(s.class_counts[2]));
+  const double mesh_volume = mesh_report.volume_mm3;
+  out += fmt::format("volume  cells {:.6g} mm3, mesh {:.6g} mm3 ({:+.3f} %), contours {:.6g} mm3\n",
+                     s.solid_volume_mm3, mesh_volume,
+                     mesh_volume != 0.0
+                         ? 100.0 * (s.solid_volume_mm3 - mesh_volume) / std::fabs(mesh_volume)
+                         : 0.0,
+                     s.contour_volume_mm3);
+  out += fmt::format("chains  {} open chains in {} layers{}\n", s.open_chains,
+                     std::count_if(s.layers.begin(), s.layers.end(),
+                                   [](const LayerStats& l) { return l.open_chains > 0; }),
+                     s.open_chains ? " (see the report: nothing was closed by a guess)" : "");
+  out += fmt::format("output  {}/: {}\n", dir.string(), fmt::join(written, ", "));
+  out += fmt::format("time    read {:.3f} s, slice {:.3f} s, total {:.3f} s\n", model->seconds_read,
+                     s.seconds, seconds_total);
+  std::fputs(out.c_str(), stdout);
+  return kExitOk;
+}
+
+}  // namespace
+
+void register_slice_command(CLI::App& app, CommandRunner& runner) {
+  auto options = std::make_shared<SliceCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("slice", "Slice a model into layers of classified cells");
+  cmd->add_option("MODEL", options->model,
+                  "Mesh file: STL (ASCII or binary), OBJ, OFF, PLY, or .gz of one")
+      ->required();
+  cmd->add_option("-o,--output", options->output_dir, "Output folder (default: <stem>-strata/)");
+  add_slice_options(*cmd, options->slice);
+  cmd->add_option("--kernel", options->kernel, "fast: double with exact predicates; exact: CGAL")
+      ->default_val("fast")
+      ->check(CLI::IsMember({"fast", "exact"}));
+  cmd->add_option("--format", options->formats,
+                  "Comma list of outputs: cells, cells-ascii, png, svg, cli, cli-binary, json")
+      ->default_val("cells,png,json");
+  cmd->add_flag("-q,--quiet", options->quiet, "Print nothing on success");
+  cmd->callback([options, &runner] { runner = [options] { return run_slice(*options); }; });
+}
+
+}  // namespace strata::cli
