@@ -1,0 +1,40 @@
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+#include "strata/slice/grid_spec.hpp"
+
+namespace strata::io {
+
+/// The two encodings of the cells file (SPEC §3.1).
+enum class CellsEncoding {
+  Binary,  ///< `.cells`: 80-byte little-endian header, then 2 bits a cell
+  Ascii,   ///< `.cells.txt`: `key value` header lines, then two characters a cell
+};
+
+/// What the header of a cells file says: the grid and the shell thickness.
+struct CellsHeader {
+  GridSpec grid;
+  double shell_mm = 0.0;
+  CellsEncoding encoding = CellsEncoding::Binary;
+};
+
+/// Magic of the binary encoding (8 bytes, no terminator).
+inline constexpr std::string_view kCellsMagic = "STRCELL1";
+/// Size of the binary header in this version; layers start at this offset.
+inline constexpr std::uint32_t kCellsHeaderBytes = 80;
+/// First line of the ASCII encoding.
+inline constexpr std::string_view kCellsAsciiFirstLine = "strata-cells 1";
+
+/// Bytes of one packed layer: ceil(nx * ny / 4) (a layer, not a row, is padded to a byte).
+inline std::uint64_t packed_layer_bytes(const GridSpec& grid) {
+  return (grid.cells_per_layer() + 3) / 4;
+}
+
+/// Exact size of a binary cells file for `grid`: header + nz * packed_layer_bytes.
+inline std::uint64_t binary_cells_file_bytes(const GridSpec& grid) {
+  return kCellsHeaderBytes + std::uint64_t{grid.nz} * packed_layer_bytes(grid);
+}
+
+}  // namespace strata::io

@@ -1,0 +1,121 @@
+#include "strata/export/cells_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+#include "export/sink_support_internal.hpp"
+
+namespace strata::io {
+
+namespace {
+
+constexpr const char* kKind = "cells writer";
+// Packed bytes handed to the file at a time: keeps the buffer small on layers of 10^8 cells.
+constexpr std::size_t kChunkBytes = std::size_t{1} << 16;
+
+Error reserved_code_error(std::uint32_t k, std::uint64_t index, std::uint32_t nx, CellClass code) {
+  return Error{ErrorCode::Internal,
+               fmt::format("{}: layer {} row {} cell {} has the code {}, which is not 00, 01 or 11",
+                           kKind, k, index / nx, index % nx, static_cast<unsigned>(code)),
+               {}};
+}
+
+class BinaryCellsWriter final : public detail::SingleFileSink {
+ public:
+  explicit BinaryCellsWriter(std::filesystem::path path) : SingleFileSink(std::move(path), kKind) {}
+
+ protected:
+  bool needs_cells() const override { return true; }
+
+  Result<void> write_header(OutputFile& out) override {
+    const GridSpec& g = run().grid;
+    std::string header;
+    header.reserve(kCellsHeaderBytes);
+    header.append(kCellsMagic);
+    detail::put_u32_le(header, kCellsHeaderBytes);
+    detail::put_u32_le(header, g.nx);
+    detail::put_u32_le(header, g.ny);
+    detail::put_u32_le(header, g.nz);
+    for (double v : {g.x0, g.y0, g.z0, g.dx, g.dy, g.dz, run().options.shell_mm}) {
+      detail::put_f64_le(header, v);
+    }
+    STRATA_ASSERT(header.size() == kCellsHeaderBytes, "cells header layout");
+    out.write(header);
+    return {};
+  }
+
+  Result<void> write_layer(OutputFile& out, const LayerResult& layer) override {
+    const std::vector<CellClass>& cells = layer.cells;
+    const std::uint64_t n = cells.size();
+    std::string chunk;
+    chunk.reserve(kChunkBytes);
+    // 4 cells a byte, the first in the two most significant bits; the last byte of the layer is
+    // padded with zero bits.
+    for (std::uint64_t base = 0; base < n; base += 4) {
+      unsigned byte = 0;
+      const std::uint64_t end = std::min<std::uint64_t>(base + 4, n);
+      for (std::uint64_t idx = base; idx < end; ++idx) {
+        const auto code = static_cast<unsigned>(cells[idx]);
+        if (code == 0b10 || code > 0b11) {
+          return reserved_code_error(layer.layer, idx, run().grid.nx, cells[idx]);
+        }
+        byte |= code << (6 - 2 * (idx - base));
+      }
+      chunk.push_back(static_cast<char>(byte));
+      if (chunk.size() == kChunkBytes) {
+        out.write(chunk);
+        chunk.clear();
+      }
+    }
+    out.write(chunk);
+    return {};
+  }
+};
+
+class AsciiCellsWriter final : public detail::SingleFileSink {
+ public:
+  explicit AsciiCellsWriter(std::filesystem::path path) : SingleFileSink(std::move(path), kKind) {}
+
+ protected:
+  bool needs_cells() const override { return true; }
+
+  Result<void> write_header(OutputFile& out) override {
+    const GridSpec& g = run().grid;
+    out.write(fmt::format("{}\ngrid {} {} {}\norigin {} {} {}\nspacing {} {} {}\nshell {}\n",
+                          kCellsAsciiFirstLine, g.nx, g.ny, g.nz, g.x0, g.y0, g.z0, g.dx, g.dy,
+                          g.dz, run().options.shell_mm));
+    return {};
+  }
+
+  Result<void> write_layer(OutputFile& out, const LayerResult& layer) override {
+    const GridSpec& g = run().grid;
+    out.write(fmt::format("layer {} z={}\n", layer.layer, layer.z_mm));
+    std::string line(std::size_t{g.nx} * 2 + 1, '\n');
+    for (std::uint32_t j = 0; j < g.ny; ++j) {
+      const CellClass* row = layer.cells.data() + std::uint64_t{j} * g.nx;
+      for (std::uint32_t i = 0; i < g.nx; ++i) {
+        const auto code = static_cast<unsigned>(row[i]);
+        if (code == 0b10 || code > 0b11) {
+          return reserved_code_error(layer.layer, std::uint64_t{j} * g.nx + i, g.nx, row[i]);
+        }
+        line[2 * std::size_t{i}] = (code & 0b10) != 0 ? '1' : '0';
+        line[2 * std::size_t{i} + 1] = (code & 0b01) != 0 ? '1' : '0';
+      }
+      out.write(line);
+    }
+    return {};
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<LayerSink> make_cells_writer(const std::filesystem::path& path,
+                                             CellsEncoding encoding) {
+  if (encoding == CellsEncoding::Ascii) return std::make_unique<AsciiCellsWriter>(path);
+  return std::make_unique<BinaryCellsWriter>(path);
+}
+
+}  // namespace strata::io

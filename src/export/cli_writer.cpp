@@ -1,0 +1,162 @@
+#include "strata/export/cli_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <string>
+#include <utility>
+
+#include "export/sink_support_internal.hpp"
+
+namespace strata::io {
+
+namespace {
+
+constexpr const char* kKind = "CLI writer";
+constexpr std::int32_t kPartId = 1;
+// Output is handed to the file in pieces of about this size.
+constexpr std::size_t kFlushBytes = std::size_t{1} << 16;
+
+/// CLI direction codes (PRIOR-ART §5): 0 clockwise (hole), 1 counter-clockwise (outer), 2 open.
+std::int32_t cli_direction(const Contour& loop) {
+  if (!loop.is_closed || loop.kind == LoopKind::Open) return 2;
+  return loop.kind == LoopKind::Hole ? 0 : 1;
+}
+
+std::string one_line(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return text;
+}
+
+class CliWriter final : public detail::SingleFileSink {
+ public:
+  CliWriter(std::filesystem::path path, CliEncoding encoding)
+      : SingleFileSink(std::move(path), kKind), encoding_(encoding) {}
+
+ protected:
+  bool needs_cells() const override { return false; }
+
+  Result<void> write_header(OutputFile& out) override {
+    const GridSpec& g = run().grid;
+    const bool binary = encoding_ == CliEncoding::Binary;
+    std::string s = "$$HEADERSTART\n";
+    s += binary ? "$$BINARY\n" : "$$ASCII\n";
+    s += "$$UNITS/00000001.000000\n";  // coordinates are millimetres
+    s += "$$VERSION/200\n";
+    if (!run().model_name.empty())
+      s += fmt::format("$$LABEL/{},{}\n", kPartId, one_line(run().model_name));
+    s += fmt::format("$$DIMENSION/{},{},{},{},{},{}\n", g.x0, g.y0, g.z0, g.x0 + g.nx * g.dx,
+                     g.y0 + g.ny * g.dy, g.z0 + g.nz * g.dz);
+    s += fmt::format("$$LAYERS/{}\n", g.nz);
+    // In the binary encoding the command stream starts right after the keyword.
+    s += binary ? "$$HEADEREND" : "$$HEADEREND\n$$GEOMETRYSTART\n";
+    out.write(s);
+    return {};
+  }
+
+  Result<void> write_layer(OutputFile& out, const LayerResult& layer) override {
+    const GridSpec& g = run().grid;
+    // The CLI's layer height is the top of the layer; the contours are its middle-plane section.
+    const double z_top = g.z0 + (static_cast<double>(layer.layer) + 1.0) * g.dz;
+    if (encoding_ == CliEncoding::Binary) {
+      write_binary_layer(out, layer, z_top);
+    } else {
+      write_ascii_layer(out, layer, z_top);
+    }
+    return {};
+  }
+
+  Result<void> write_trailer(OutputFile& out) override {
+    if (encoding_ == CliEncoding::Ascii) out.write("$$GEOMETRYEND\n");
+    return {};
+  }
+
+ private:
+  static void flush_if_large(OutputFile& out, std::string& s) {
+    if (s.size() >= kFlushBytes) {
+      out.write(s);
+      s.clear();
+    }
+  }
+
+  void write_ascii_layer(OutputFile& out, const LayerResult& layer, double z_top) {
+    std::string s = "$$LAYER/";
+    detail::append_number(s, z_top);
+    s += '\n';
+    for (const Contour& loop : layer.contours.loops) {
+      if (loop.points.size() < 2) continue;
+      const std::int32_t dir = cli_direction(loop);
+      const std::size_t n = loop.points.size() + (dir == 2 ? 0 : 1);
+      fmt::format_to(std::back_inserter(s), "$$POLYLINE/{},{},{}", kPartId, dir, n);
+      for (std::size_t p = 0; p < n; ++p) {
+        const Point2& pt = loop.points[p % loop.points.size()];
+        s += ',';
+        detail::append_number(s, pt.x);
+        s += ',';
+        detail::append_number(s, pt.y);
+        flush_if_large(out, s);
+      }
+      s += '\n';
+    }
+    if (!layer.hatches.empty()) {
+      fmt::format_to(std::back_inserter(s), "$$HATCHES/{},{}", kPartId, layer.hatches.size());
+      for (const HatchSegment& h : layer.hatches) {
+        const double y = run().grid.yc(h.row) + run().options.scan_offset_mm;
+        for (double v : {h.x_start, y, h.x_end, y}) {
+          s += ',';
+          detail::append_number(s, v);
+        }
+        flush_if_large(out, s);
+      }
+      s += '\n';
+    }
+    out.write(s);
+  }
+
+  void write_binary_layer(OutputFile& out, const LayerResult& layer, double z_top) {
+    std::string s;
+    detail::put_u16_le(s, kCliLayerLong);
+    detail::put_f32_le(s, static_cast<float>(z_top));
+    for (const Contour& loop : layer.contours.loops) {
+      if (loop.points.size() < 2) continue;
+      const std::int32_t dir = cli_direction(loop);
+      const std::size_t n = loop.points.size() + (dir == 2 ? 0 : 1);
+      detail::put_u16_le(s, kCliPolylineLong);
+      detail::put_i32_le(s, kPartId);
+      detail::put_i32_le(s, dir);
+      detail::put_i32_le(s, static_cast<std::int32_t>(n));
+      for (std::size_t p = 0; p < n; ++p) {
+        const Point2& pt = loop.points[p % loop.points.size()];
+        detail::put_f32_le(s, static_cast<float>(pt.x));
+        detail::put_f32_le(s, static_cast<float>(pt.y));
+        flush_if_large(out, s);
+      }
+    }
+    if (!layer.hatches.empty()) {
+      detail::put_u16_le(s, kCliHatchesLong);
+      detail::put_i32_le(s, kPartId);
+      detail::put_i32_le(s, static_cast<std::int32_t>(layer.hatches.size()));
+      for (const HatchSegment& h : layer.hatches) {
+        const double y = run().grid.yc(h.row) + run().options.scan_offset_mm;
+        detail::put_f32_le(s, static_cast<float>(h.x_start));
+        detail::put_f32_le(s, static_cast<float>(y));
+        detail::put_f32_le(s, static_cast<float>(h.x_end));
+        detail::put_f32_le(s, static_cast<float>(y));
+        flush_if_large(out, s);
+      }
+    }
+    out.write(s);
+  }
+
+  CliEncoding encoding_;
+};
+
+}  // namespace
+
+std::unique_ptr<LayerSink> make_cli_writer(const std::filesystem::path& path,
+                                           CliEncoding encoding) {
+  return std::make_unique<CliWriter>(path, encoding);
+}
+
+}  // namespace strata::io

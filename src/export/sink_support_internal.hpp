@@ -1,0 +1,178 @@
+#pragma once
+
+// Pieces shared by the layer writers of src/export/: the paths a sink created (so abort() can take
+// them away), the order checks every sink makes, little-endian encoding, number formatting.
+
+#include <fmt/format.h>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "strata/core/result.hpp"
+#include "strata/export/output_file.hpp"
+#include "strata/pipeline/layer_sink.hpp"
+
+namespace strata::io::detail {
+
+/// The folders and finished files a sink created, so that abort() can remove them again.
+class CreatedPaths {
+ public:
+  /// Creates `dir` and its missing parents, remembering each folder it created.
+  Result<void> ensure_directory(const std::filesystem::path& dir);
+  /// Remembers a finished file.
+  void add_file(const std::filesystem::path& file) { files_.push_back(file); }
+  /// Removes the remembered files, then the remembered folders (deepest first) that are empty.
+  void remove_all() noexcept;
+
+ private:
+  std::vector<std::filesystem::path> files_;
+  std::vector<std::filesystem::path> dirs_;  ///< in creation order, parents first
+};
+
+/// Where a sink is in its life: begin, layers 0 .. nz-1 in order, finish or abort.
+class SinkProgress {
+ public:
+  enum class State { Idle, Started, Finished, Aborted };
+
+  void start(const SliceRunInfo& run) {
+    run_ = run;
+    next_layer_ = 0;
+    state_ = State::Started;
+  }
+  /// Checks that `layer` is the next one and, if `needs_cells`, that it carries nx * ny cells.
+  Result<void> check_layer(const LayerResult& layer, bool needs_cells, const char* sink) const;
+  void layer_done() { ++next_layer_; }
+  /// Checks that every layer arrived.
+  Result<void> check_complete(const char* sink) const;
+  Result<void> check_begin(const char* sink) const;
+
+  const SliceRunInfo& run() const { return run_; }
+  const GridSpec& grid() const { return run_.grid; }
+  State state() const { return state_; }
+  void set_state(State state) { state_ = state; }
+  std::uint32_t next_layer() const { return next_layer_; }
+
+ private:
+  SliceRunInfo run_;
+  std::uint32_t next_layer_ = 0;
+  State state_ = State::Idle;
+};
+
+/// Base of the sinks that write one file: begin() opens it under a temporary name and writes the
+/// header, add_layer() appends, finish() writes the trailer and renames the file into place.
+class SingleFileSink : public LayerSink {
+ public:
+  /// `kind` names the sink in messages ("cells writer").
+  SingleFileSink(std::filesystem::path path, const char* kind);
+  ~SingleFileSink() override;
+  SingleFileSink(const SingleFileSink&) = delete;
+  SingleFileSink& operator=(const SingleFileSink&) = delete;
+
+  Result<void> begin(const SliceRunInfo& run) final;
+  Result<void> add_layer(const LayerResult& layer) final;
+  Result<void> finish() final;
+  void abort() noexcept final;
+
+ protected:
+  virtual bool needs_cells() const = 0;
+  virtual Result<void> write_header(OutputFile& out) = 0;
+  virtual Result<void> write_layer(OutputFile& out, const LayerResult& layer) = 0;
+  virtual Result<void> write_trailer(OutputFile& out) { return {}; }
+  const SliceRunInfo& run() const { return progress_.run(); }
+
+ private:
+  std::filesystem::path path_;
+  const char* kind_;
+  SinkProgress progress_;
+  CreatedPaths created_;
+  OutputFile out_;
+};
+
+/// Base of the sinks that write a file a layer into `dir/<subdir>/<stem>_<k>.<extension>`; each
+/// file is renamed into place as soon as it is complete, and remembered so abort() can remove it.
+class LayerFilesSink : public LayerSink {
+ public:
+  LayerFilesSink(const std::filesystem::path& dir, const char* subdir, std::string stem,
+                 const char* extension, const char* kind);
+  ~LayerFilesSink() override;
+  LayerFilesSink(const LayerFilesSink&) = delete;
+  LayerFilesSink& operator=(const LayerFilesSink&) = delete;
+
+  Result<void> begin(const SliceRunInfo& run) final;
+  Result<void> add_layer(const LayerResult& layer) final;
+  Result<void> finish() final;
+  void abort() noexcept final;
+
+ protected:
+  virtual bool needs_cells() const = 0;
+  virtual Result<void> write_layer(OutputFile& out, const LayerResult& layer) = 0;
+  const SliceRunInfo& run() const { return progress_.run(); }
+  const std::string& stem() const { return stem_; }
+
+ private:
+  /// Removes `<stem>_<index>.<extension>` files with index >= nz left by an earlier run.
+  void remove_stale_layers() noexcept;
+
+  std::filesystem::path folder_;
+  std::string stem_;
+  const char* extension_;
+  const char* kind_;
+  SinkProgress progress_;
+  CreatedPaths created_;
+};
+
+inline void put_u16_le(std::string& out, std::uint16_t v) {
+  out.push_back(static_cast<char>(v & 0xffu));
+  out.push_back(static_cast<char>((v >> 8) & 0xffu));
+}
+
+inline void put_u32_le(std::string& out, std::uint32_t v) {
+  for (int shift = 0; shift < 32; shift += 8)
+    out.push_back(static_cast<char>((v >> shift) & 0xffu));
+}
+
+inline void put_i32_le(std::string& out, std::int32_t v) {
+  put_u32_le(out, static_cast<std::uint32_t>(v));
+}
+
+inline void put_f32_le(std::string& out, float v) {
+  std::uint32_t bits = 0;
+  std::memcpy(&bits, &v, sizeof bits);
+  put_u32_le(out, bits);
+}
+
+inline void put_f64_le(std::string& out, double v) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &v, sizeof bits);
+  for (int shift = 0; shift < 64; shift += 8)
+    out.push_back(static_cast<char>((bits >> shift) & 0xffu));
+}
+
+inline std::uint32_t get_u32_le(const unsigned char* p) {
+  return std::uint32_t{p[0]} | (std::uint32_t{p[1]} << 8) | (std::uint32_t{p[2]} << 16) |
+         (std::uint32_t{p[3]} << 24);
+}
+
+inline double get_f64_le(const unsigned char* p) {
+  std::uint64_t bits = 0;
+  for (int b = 0; b < 8; ++b) bits |= std::uint64_t{p[b]} << (8 * b);
+  double v = 0.0;
+  std::memcpy(&v, &bits, sizeof v);
+  return v;
+}
+
+/// Appends a double in the shortest form that reads back to the same bits.
+inline void append_number(std::string& out, double v) {
+  fmt::format_to(std::back_inserter(out), "{}", v);
+}
+
+/// `<stem>_<index, 5 digits at least>.<extension>`: the name of a layer file.
+inline std::string layer_file_name(const std::string& stem, std::uint32_t k,
+                                   const char* extension) {
+  return fmt::format("{}_{:05}.{}", stem, k, extension);
+}
+
+}  // namespace strata::io::detail

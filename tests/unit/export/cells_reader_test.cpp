@@ -1,0 +1,453 @@
+#include "strata/export/cells_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "export_test_support.hpp"
+#include "strata/export/cells_writer.hpp"
+
+namespace strata::io {
+namespace {
+
+using testing::read_file_bytes;
+using testing::run_sink;
+using testing::ScratchDir;
+using testing::small_layers;
+using testing::small_run;
+using testing::write_file_bytes;
+
+using Counts = std::array<std::uint64_t, 3>;
+
+std::filesystem::path write_small(const ScratchDir& dir, CellsEncoding encoding) {
+  const auto path = dir / (encoding == CellsEncoding::Binary ? "part.cells" : "part.cells.txt");
+  auto sink = make_cells_writer(path, encoding);
+  auto ok = run_sink(*sink, small_run(), small_layers());
+  EXPECT_TRUE(ok) << ok.error().to_string();
+  return path;
+}
+
+std::vector<CellClass> all_small_cells() {
+  std::vector<CellClass> cells;
+  for (const auto& layer : small_layers()) {
+    cells.insert(cells.end(), layer.cells.begin(), layer.cells.end());
+  }
+  return cells;
+}
+
+void expect_small_header(const CellsHeader& h) {
+  const GridSpec expected = small_run().grid;
+  EXPECT_EQ(h.grid.nx, expected.nx);
+  EXPECT_EQ(h.grid.ny, expected.ny);
+  EXPECT_EQ(h.grid.nz, expected.nz);
+  EXPECT_EQ(h.grid.x0, expected.x0);
+  EXPECT_EQ(h.grid.y0, expected.y0);
+  EXPECT_EQ(h.grid.z0, expected.z0);
+  EXPECT_EQ(h.grid.dx, expected.dx);
+  EXPECT_EQ(h.grid.dy, expected.dy);
+  EXPECT_EQ(h.grid.dz, expected.dz);
+  EXPECT_EQ(h.shell_mm, 0.75);
+}
+
+/// Reads `path`, expecting a BadInput error; returns it.
+Error read_error(const std::filesystem::path& path) {
+  auto read = read_cells(path);
+  EXPECT_FALSE(read) << path << " was read without error";
+  if (read) return {};
+  EXPECT_EQ(read.error().code, ErrorCode::BadInput);
+  return read.error();
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(CellsReader, BinaryRoundTripGivesTheWrittenClasses) {
+  ScratchDir dir;
+  auto read = read_cells(write_small(dir, CellsEncoding::Binary));
+  ASSERT_TRUE(read) << read.error().to_string();
+  EXPECT_EQ(read->header.encoding, CellsEncoding::Binary);
+  expect_small_header(read->header);
+  EXPECT_EQ(read->cells, all_small_cells());
+  EXPECT_EQ(read->at(3, 2, 0), CellClass::Boundary);
+  EXPECT_EQ(read->at(1, 1, 1), CellClass::Interior);
+}
+
+TEST(CellsReader, AsciiRoundTripGivesTheWrittenClasses) {
+  ScratchDir dir;
+  auto read = read_cells(write_small(dir, CellsEncoding::Ascii));
+  ASSERT_TRUE(read) << read.error().to_string();
+  EXPECT_EQ(read->header.encoding, CellsEncoding::Ascii);
+  expect_small_header(read->header);
+  EXPECT_EQ(read->cells, all_small_cells());
+}
+
+TEST(CellsReader, AsciiRoundTripKeepsAwkwardDoublesBitForBit) {
+  ScratchDir dir;
+  SliceRunInfo run = small_run();
+  run.grid.x0 = 0.1 + 0.2;
+  run.grid.y0 = -1.0 / 3.0;
+  run.grid.z0 = 1e-300;
+  run.grid.dx = 0.1;
+  run.options.shell_mm = 2.0 / 3.0;
+  auto sink = make_cells_writer(dir / "a.cells.txt", CellsEncoding::Ascii);
+  ASSERT_TRUE(run_sink(*sink, run, small_layers()));
+  auto read = read_cells(dir / "a.cells.txt");
+  ASSERT_TRUE(read) << read.error().to_string();
+  EXPECT_EQ(read->header.grid.x0, run.grid.x0);
+  EXPECT_EQ(read->header.grid.y0, run.grid.y0);
+  EXPECT_EQ(read->header.grid.z0, run.grid.z0);
+  EXPECT_EQ(read->header.grid.dx, run.grid.dx);
+  EXPECT_EQ(read->header.shell_mm, run.options.shell_mm);
+}
+
+TEST(CellsReader, SummaryCountsClassesInTotalAndPerLayer) {
+  ScratchDir dir;
+  auto summary = summarize_cells(write_small(dir, CellsEncoding::Binary));
+  ASSERT_TRUE(summary) << summary.error().to_string();
+  expect_small_header(summary->header);
+  EXPECT_EQ(summary->class_counts, (Counts{5, 9, 16}));
+  ASSERT_EQ(summary->layer_counts.size(), 2u);
+  EXPECT_EQ(summary->layer_counts[0], (Counts{5, 6, 4}));
+  EXPECT_EQ(summary->layer_counts[1], (Counts{0, 3, 12}));
+}
+
+TEST(CellsReader, SummaryGivesTheBoundsOfTheSolidCells) {
+  ScratchDir dir;
+  SliceRunInfo run = small_run();
+  run.grid.nz = 3;
+  auto layers = small_layers();
+  layers.push_back(layers[0]);
+  layers[2].layer = 2;
+  layers[2].cells.assign(15, CellClass::Empty);
+  layers[0].cells.assign(15, CellClass::Empty);
+  layers[0].cells[1 * 5 + 3] = CellClass::Interior;  // (3, 1, 0)
+  auto sink = make_cells_writer(dir / "b.cells");
+  ASSERT_TRUE(run_sink(*sink, run, layers));
+  auto summary = summarize_cells(dir / "b.cells");
+  ASSERT_TRUE(summary) << summary.error().to_string();
+  ASSERT_TRUE(summary->solid_bounds.has_value());
+  const CellIndexBox& b = *summary->solid_bounds;
+  EXPECT_EQ(b.i_min, 0u);
+  EXPECT_EQ(b.i_max, 4u);
+  EXPECT_EQ(b.j_min, 0u);
+  EXPECT_EQ(b.j_max, 2u);
+  EXPECT_EQ(b.k_min, 0u);
+  EXPECT_EQ(b.k_max, 1u);
+}
+
+TEST(CellsReader, SummaryOfAnAllEmptyFileHasNoBounds) {
+  ScratchDir dir;
+  auto layers = small_layers();
+  for (auto& layer : layers) layer.cells.assign(15, CellClass::Empty);
+  auto sink = make_cells_writer(dir / "e.cells");
+  ASSERT_TRUE(run_sink(*sink, small_run(), layers));
+  auto summary = summarize_cells(dir / "e.cells");
+  ASSERT_TRUE(summary);
+  EXPECT_FALSE(summary->solid_bounds.has_value());
+  EXPECT_EQ(summary->class_counts, (Counts{30, 0, 0}));
+}
+
+TEST(CellsReader, BothEncodingsSummarizeAlike) {
+  ScratchDir dir;
+  auto binary = summarize_cells(write_small(dir, CellsEncoding::Binary));
+  auto ascii = summarize_cells(write_small(dir, CellsEncoding::Ascii));
+  ASSERT_TRUE(binary);
+  ASSERT_TRUE(ascii);
+  EXPECT_EQ(binary->class_counts, ascii->class_counts);
+  EXPECT_EQ(binary->layer_counts, ascii->layer_counts);
+}
+
+TEST(CellsReader, LayerVisitorSeesLayersInOrderAndCanStop) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Binary);
+  std::vector<std::uint32_t> seen;
+  auto read = read_cells_layers(
+      path,
+      [&](const CellsHeader&, std::uint32_t k, std::span<const CellClass> cells) -> Result<void> {
+        seen.push_back(k);
+        EXPECT_EQ(cells.size(), 15u);
+        return Error{ErrorCode::Usage, "stop", "visitor"};
+      });
+  ASSERT_FALSE(read);
+  EXPECT_EQ(read.error().message, "stop");
+  EXPECT_EQ(seen, std::vector<std::uint32_t>{0});
+}
+
+// ---------------------------------------------------------------------------- binary errors
+
+TEST(CellsReader, MissingFileIsBadInput) {
+  ScratchDir dir;
+  const Error e = read_error(dir / "nope.cells");
+  EXPECT_EQ(e.location, (dir / "nope.cells").string());
+}
+
+TEST(CellsReader, BadMagicIsRejected) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Binary);
+  std::string file = read_file_bytes(path);
+  file[7] = '2';  // STRCELL2
+  write_file_bytes(path, file);
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string());
+  EXPECT_TRUE(contains(e.message, "STRCELL1")) << e.message;
+}
+
+TEST(CellsReader, TruncatedHeaderIsRejected) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Binary);
+  write_file_bytes(path, read_file_bytes(path).substr(0, 40));
+  const Error e = read_error(path);
+  EXPECT_TRUE(contains(e.message, "ends after 40 bytes")) << e.message;
+}
+
+TEST(CellsReader, WrongHeaderSizeFieldIsRejected) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Binary);
+  std::string file = read_file_bytes(path);
+  file[8] = 96;
+  write_file_bytes(path, file);
+  const Error e = read_error(path);
+  EXPECT_TRUE(contains(e.message, "header size field is 96")) << e.message;
+}
+
+TEST(CellsReader, TruncatedLayersAreRejectedWithTheExpectedLength) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Binary);
+  write_file_bytes(path, read_file_bytes(path).substr(0, 86));
+  const Error e = read_error(path);
+  EXPECT_TRUE(contains(e.message, "86 bytes, shorter than the 88 bytes")) << e.message;
+}
+
+TEST(CellsReader, TrailingBytesAreRejected) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Binary);
+  write_file_bytes(path, read_file_bytes(path) + std::string(1, '\0'));
+  const Error e = read_error(path);
+  EXPECT_TRUE(contains(e.message, "89 bytes, longer than the 88 bytes")) << e.message;
+}
+
+TEST(CellsReader, ZeroSizedGridIsRejected) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Binary);
+  std::string file = read_file_bytes(path);
+  file[12] = 0;  // nx = 0
+  write_file_bytes(path, file.substr(0, 80));
+  const Error e = read_error(path);
+  EXPECT_TRUE(contains(e.message, "0 x 3 x 2")) << e.message;
+}
+
+TEST(CellsReader, ReservedCodeNamesLayerRowAndCell) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Binary);
+  std::string file = read_file_bytes(path);
+  // Layer 1, cell index 6 = row 1, cell 1: byte 80 + 4 + 1, bits 3..2 (0xF5 -> 0xF9: 01 -> 10).
+  ASSERT_EQ(static_cast<unsigned char>(file[85]), 0xF5);
+  file[85] = static_cast<char>(0xF9);
+  write_file_bytes(path, file);
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ": layer 1, row 1, cell 1");
+  EXPECT_TRUE(contains(e.message, "reserved cell code 10")) << e.message;
+}
+
+TEST(CellsReader, NonZeroPaddingBitsAreRejected) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Binary);
+  std::string file = read_file_bytes(path);
+  file[83] = static_cast<char>(0x71);  // layer 0's last byte 0x70 with a padding bit set
+  write_file_bytes(path, file);
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ": layer 0");
+  EXPECT_TRUE(contains(e.message, "padding")) << e.message;
+}
+
+TEST(CellsReader, SummaryStopsAtTheSameErrors) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Binary);
+  write_file_bytes(path, read_file_bytes(path).substr(0, 84));
+  auto summary = summarize_cells(path);
+  ASSERT_FALSE(summary);
+  EXPECT_EQ(summary.error().code, ErrorCode::BadInput);
+}
+
+TEST(CellsReader, UnknownContentIsNotACellsFile) {
+  ScratchDir dir;
+  write_file_bytes(dir / "x.cells", "solid cube\nfacet normal 0 0 1\n");
+  const Error e = read_error(dir / "x.cells");
+  EXPECT_TRUE(contains(e.message, "not a cells file")) << e.message;
+}
+
+// ----------------------------------------------------------------------------- ascii errors
+
+/// The ASCII file of small_run() with line `number` (1-based) replaced.
+std::filesystem::path ascii_with_line(const ScratchDir& dir, std::size_t number,
+                                      const std::string& replacement) {
+  const auto path = write_small(dir, CellsEncoding::Ascii);
+  auto lines = testing::lines_of(read_file_bytes(path));
+  lines.at(number - 1) = replacement;
+  std::string text;
+  for (const auto& line : lines) text += line + "\n";
+  write_file_bytes(path, text);
+  return path;
+}
+
+TEST(CellsReader, AsciiShortRowNamesTheLine) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 8, "11000100");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":8");
+  EXPECT_TRUE(contains(e.message, "row 1 of layer 0 has 8 characters; expected 10")) << e.message;
+}
+
+TEST(CellsReader, AsciiReservedCodeNamesTheLineAndCell) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 12, "1101100111");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":12");
+  EXPECT_TRUE(contains(e.message, "reserved cell code 10 at layer 1, row 1, cell 2")) << e.message;
+}
+
+TEST(CellsReader, AsciiForeignCharacterNamesTheLine) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 7, "00011x1101");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":7");
+  EXPECT_TRUE(contains(e.message, "cell 2")) << e.message;
+}
+
+TEST(CellsReader, AsciiWrongLayerIndexNamesTheLine) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 10, "layer 2 z=1.625");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":10");
+  EXPECT_TRUE(contains(e.message, "layer 2 found where layer 1 was expected")) << e.message;
+}
+
+TEST(CellsReader, AsciiMalformedLayerLineNamesTheLine) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 10, "layer 1 at 1.625");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":10");
+}
+
+TEST(CellsReader, AsciiBadHeaderValueNamesTheLine) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 3, "origin -1.5 abc 0.125");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":3");
+}
+
+TEST(CellsReader, AsciiUnknownHeaderKeyNamesTheLine) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 5, "thickness 0.75");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":5");
+  EXPECT_TRUE(contains(e.message, "unknown header key 'thickness'")) << e.message;
+}
+
+TEST(CellsReader, AsciiUnsupportedVersionIsRejected) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 1, "strata-cells 2");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":1");
+}
+
+TEST(CellsReader, AsciiTruncatedFileSaysWhatIsMissing) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Ascii);
+  auto lines = testing::lines_of(read_file_bytes(path));
+  std::string text;
+  for (std::size_t n = 0; n < 11; ++n) text += lines[n] + "\n";  // stops inside layer 1
+  write_file_bytes(path, text);
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":12");
+  EXPECT_TRUE(contains(e.message, "file ends inside layer 1: 1 of 3 rows")) << e.message;
+}
+
+TEST(CellsReader, AsciiExtraContentAfterTheLastLayerIsRejected) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Ascii);
+  write_file_bytes(path, read_file_bytes(path) + "\n0000000000\n");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":15");
+}
+
+TEST(CellsReader, AsciiAcceptsCrLfLineEnds) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Ascii);
+  std::string crlf;
+  for (const auto& line : testing::lines_of(read_file_bytes(path))) crlf += line + "\r\n";
+  write_file_bytes(path, crlf);
+  auto read = read_cells(path);
+  ASSERT_TRUE(read) << read.error().to_string();
+  EXPECT_EQ(read->cells, all_small_cells());
+}
+
+// ------------------------------------------------------------------ conformance vectors
+
+/// Reads a file of ../shared/vectors and checks its grid, spacing, shell and class counts against
+/// the table of vectors/README.md.
+void expect_vector(const std::string& name, std::array<std::uint32_t, 3> n, double cell,
+                   double layer, double shell, Counts counts) {
+  const std::filesystem::path path = std::filesystem::path(STRATA_SHARED_DIR) / "vectors" / name;
+  auto file = read_cells(path);
+  ASSERT_TRUE(file) << file.error().to_string();
+  const GridSpec& g = file->header.grid;
+  EXPECT_EQ(g.nx, n[0]);
+  EXPECT_EQ(g.ny, n[1]);
+  EXPECT_EQ(g.nz, n[2]);
+  EXPECT_EQ(g.dx, cell);
+  EXPECT_EQ(g.dy, cell);
+  EXPECT_EQ(g.dz, layer);
+  EXPECT_EQ(file->header.shell_mm, shell);
+  Counts seen{};
+  for (CellClass c : file->cells) {
+    ++seen[c == CellClass::Empty ? 0 : c == CellClass::Interior ? 1 : 2];
+  }
+  EXPECT_EQ(seen, counts);
+  auto summary = summarize_cells(path);
+  ASSERT_TRUE(summary) << summary.error().to_string();
+  EXPECT_EQ(summary->class_counts, counts);
+}
+
+TEST(CellsReaderVectors, TetrahedronCell1Distance) {
+  expect_vector("tetrahedron__cell1_layer1_shell1.5_distance_nonzero.cells", {10, 10, 10}, 1, 1,
+                1.5, {835, 10, 155});
+}
+
+TEST(CellsReaderVectors, TetrahedronCellHalfLayers) {
+  expect_vector("tetrahedron__cell0.5_layer0.25_shell1_layers_nonzero.cells", {20, 20, 40}, 0.5,
+                0.25, 1, {13340, 70, 2590});
+}
+
+TEST(CellsReaderVectors, StackedBoxesLayers) {
+  expect_vector("stacked_boxes__cell1_layer1_shell1_layers_nonzero.cells", {6, 6, 4}, 1, 1, 1,
+                {40, 20, 84});
+}
+
+TEST(CellsReaderVectors, StackedBoxesDistanceEvenOdd) {
+  expect_vector("stacked_boxes__cell0.5_layer0.5_shell0.6_distance_evenodd.cells", {12, 12, 7}, 0.5,
+                0.5, 0.6, {320, 172, 516});
+}
+
+TEST(CellsReaderVectors, WallsThroughCentres) {
+  expect_vector("walls_through_centres__cell1_layer1_shell1_layers_nonzero.cells", {4, 4, 3}, 1, 1,
+                1, {15, 2, 31});
+}
+
+TEST(CellsReaderVectors, OverlappingBoxesNonZero) {
+  expect_vector("overlapping_boxes__cell1_layer1_shell1_layers_nonzero.cells", {6, 4, 4}, 1, 1, 1,
+                {24, 12, 60});
+}
+
+TEST(CellsReaderVectors, OverlappingBoxesEvenOdd) {
+  expect_vector("overlapping_boxes__cell1_layer1_shell1_layers_evenodd.cells", {6, 4, 4}, 1, 1, 1,
+                {32, 0, 64});
+}
+
+}  // namespace
+}  // namespace strata::io

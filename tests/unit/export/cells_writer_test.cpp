@@ -1,0 +1,280 @@
+#include "strata/export/cells_writer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "export_test_support.hpp"
+#include "strata/export/cells_reader.hpp"
+
+namespace strata::io {
+namespace {
+
+using testing::code;
+using testing::codes;
+using testing::LayerData;
+using testing::list_tree;
+using testing::read_file_bytes;
+using testing::run_sink;
+using testing::ScratchDir;
+using testing::small_layers;
+using testing::small_run;
+
+std::string bytes(std::initializer_list<int> values) {
+  std::string out;
+  for (int v : values) out.push_back(static_cast<char>(v));
+  return out;
+}
+
+/// A one-layer run of nx x ny cells.
+SliceRunInfo flat_run(std::uint32_t nx, std::uint32_t ny) {
+  SliceRunInfo run;
+  run.grid.nx = nx;
+  run.grid.ny = ny;
+  run.grid.nz = 1;
+  return run;
+}
+
+std::string packed_single_layer(const ScratchDir& dir, std::uint32_t nx, std::uint32_t ny,
+                                const std::vector<CellClass>& cells) {
+  auto sink = make_cells_writer(dir / "one.cells");
+  LayerData layer;
+  layer.cells = cells;
+  auto ok = run_sink(*sink, flat_run(nx, ny), {layer});
+  EXPECT_TRUE(ok) << ok.error().to_string();
+  return read_file_bytes(dir / "one.cells").substr(kCellsHeaderBytes);
+}
+
+TEST(CellsWriter, BinaryHeaderIsTheSpecLayoutLittleEndian) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells", CellsEncoding::Binary);
+  ASSERT_TRUE(run_sink(*sink, small_run(), small_layers()));
+  const std::string file = read_file_bytes(dir / "part.cells");
+  ASSERT_GE(file.size(), 80u);
+  const std::string expected = bytes({
+      'S', 'T', 'R', 'C', 'E', 'L', 'L',  '1',               // magic
+      80,  0,   0,   0,                                      // header size
+      5,   0,   0,   0,   3,   0,   0,    0,    2, 0, 0, 0,  // nx ny nz
+      0,   0,   0,   0,   0,   0,   0xF8, 0xBF,              // x0 = -1.5
+      0,   0,   0,   0,   0,   0,   0x02, 0x40,              // y0 = 2.25
+      0,   0,   0,   0,   0,   0,   0xC0, 0x3F,              // z0 = 0.125
+      0,   0,   0,   0,   0,   0,   0xE0, 0x3F,              // dx = 0.5
+      0,   0,   0,   0,   0,   0,   0xD0, 0x3F,              // dy = 0.25
+      0,   0,   0,   0,   0,   0,   0xF0, 0x3F,              // dz = 1
+      0,   0,   0,   0,   0,   0,   0xE8, 0x3F,              // shell t = 0.75
+  });
+  EXPECT_EQ(file.substr(0, 80), expected);
+}
+
+TEST(CellsWriter, BinaryLayersArePackedAndPaddedPerLayer) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells");
+  ASSERT_TRUE(run_sink(*sink, small_run(), small_layers()));
+  const std::string file = read_file_bytes(dir / "part.cells");
+  // 15 cells a layer: ceil(15 / 4) = 4 bytes, the last holding 3 cells and 2 zero padding bits
+  // (padding the rows instead would take 3 x 2 = 6 bytes).
+  ASSERT_EQ(file.size(), 80u + 2 * 4);
+  EXPECT_EQ(file.substr(80), bytes({0x1F, 0x71, 0x05, 0x70,     // layer 0
+                                    0xFF, 0xF5, 0x7F, 0xFC}));  // layer 1
+}
+
+TEST(CellsWriter, FirstCellGoesToTheMostSignificantBits) {
+  ScratchDir dir;
+  EXPECT_EQ(packed_single_layer(dir, 1, 1, codes({1})), bytes({0x40}));
+  EXPECT_EQ(packed_single_layer(dir, 4, 1, codes({3, 0, 0, 0})), bytes({0xC0}));
+  EXPECT_EQ(packed_single_layer(dir, 4, 1, codes({0, 0, 0, 3})), bytes({0x03}));
+  EXPECT_EQ(packed_single_layer(dir, 2, 2, codes({0, 1, 3, 0})), bytes({0x1C}));
+}
+
+TEST(CellsWriter, RowsRunFromJZeroAndCellsFromIZero) {
+  ScratchDir dir;
+  // 2 x 3: row 0 = (1, 0), row 1 = (0, 3), row 2 = (3, 1).
+  EXPECT_EQ(packed_single_layer(dir, 2, 3, codes({1, 0, 0, 3, 3, 1})), bytes({0x43, 0xD0}));
+}
+
+TEST(CellsWriter, AsciiFileHasTheSpecLines) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells.txt", CellsEncoding::Ascii);
+  ASSERT_TRUE(run_sink(*sink, small_run(), small_layers()));
+  EXPECT_EQ(read_file_bytes(dir / "part.cells.txt"),
+            "strata-cells 1\n"
+            "grid 5 3 2\n"
+            "origin -1.5 2.25 0.125\n"
+            "spacing 0.5 0.25 1\n"
+            "shell 0.75\n"
+            "layer 0 z=0.625\n"
+            "0001111101\n"
+            "1100010000\n"
+            "0101011100\n"
+            "layer 1 z=1.625\n"
+            "1111111111\n"
+            "1101010111\n"
+            "1111111111\n");
+}
+
+TEST(CellsWriter, AsciiNumbersReadBackToTheSameBits) {
+  ScratchDir dir;
+  SliceRunInfo run = flat_run(1, 1);
+  run.grid.x0 = 0.1;
+  run.grid.y0 = 1.0 / 3.0;
+  run.grid.z0 = -1e-7;
+  run.grid.dx = 0.1 + 0.2;
+  auto sink = make_cells_writer(dir / "n.cells.txt", CellsEncoding::Ascii);
+  LayerData layer;
+  layer.cells = codes({0});
+  ASSERT_TRUE(run_sink(*sink, run, {layer}));
+  const auto lines = testing::lines_of(read_file_bytes(dir / "n.cells.txt"));
+  ASSERT_GE(lines.size(), 4u);
+  double x0 = 0, y0 = 0, z0 = 0, dx = 0;
+  ASSERT_EQ(std::sscanf(lines[2].c_str(), "origin %lf %lf %lf", &x0, &y0, &z0), 3);
+  ASSERT_EQ(std::sscanf(lines[3].c_str(), "spacing %lf", &dx), 1);
+  EXPECT_EQ(x0, run.grid.x0);
+  EXPECT_EQ(y0, run.grid.y0);
+  EXPECT_EQ(z0, run.grid.z0);
+  EXPECT_EQ(dx, run.grid.dx);
+}
+
+TEST(CellsWriter, LayerOutOfOrderIsAnInternalError) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells");
+  auto layers = small_layers();
+  ASSERT_TRUE(sink->begin(small_run()));
+  auto added = sink->add_layer(layers[1].result());
+  ASSERT_FALSE(added);
+  EXPECT_EQ(added.error().code, ErrorCode::Internal);
+  sink->abort();
+  EXPECT_TRUE(list_tree(dir.path()).empty());
+}
+
+TEST(CellsWriter, WrongCellCountIsAnInternalError) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells");
+  auto layers = small_layers();
+  layers[0].cells.pop_back();
+  ASSERT_TRUE(sink->begin(small_run()));
+  auto added = sink->add_layer(layers[0].result());
+  ASSERT_FALSE(added);
+  EXPECT_EQ(added.error().code, ErrorCode::Internal);
+}
+
+TEST(CellsWriter, ReservedCodeIsAnInternalError) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells");
+  auto layers = small_layers();
+  layers[0].cells[7] = code(2);
+  ASSERT_TRUE(sink->begin(small_run()));
+  auto added = sink->add_layer(layers[0].result());
+  ASSERT_FALSE(added);
+  EXPECT_EQ(added.error().code, ErrorCode::Internal);
+  EXPECT_NE(added.error().message.find("row 1 cell 2"), std::string::npos) << added.error().message;
+}
+
+TEST(CellsWriter, FinishBeforeAllLayersFailsAndWritesNothing) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells");
+  auto layers = small_layers();
+  ASSERT_TRUE(sink->begin(small_run()));
+  ASSERT_TRUE(sink->add_layer(layers[0].result()));
+  auto finished = sink->finish();
+  ASSERT_FALSE(finished);
+  EXPECT_EQ(finished.error().code, ErrorCode::Internal);
+  EXPECT_FALSE(std::filesystem::exists(dir / "part.cells"));
+  sink->abort();
+  EXPECT_TRUE(list_tree(dir.path()).empty());
+}
+
+TEST(CellsWriter, NoFileUnderTheFinalNameBeforeFinish) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells");
+  auto layers = small_layers();
+  ASSERT_TRUE(sink->begin(small_run()));
+  ASSERT_TRUE(sink->add_layer(layers[0].result()));
+  ASSERT_TRUE(sink->add_layer(layers[1].result()));
+  EXPECT_FALSE(std::filesystem::exists(dir / "part.cells"));
+  ASSERT_TRUE(sink->finish());
+  EXPECT_TRUE(std::filesystem::exists(dir / "part.cells"));
+  EXPECT_EQ(list_tree(dir.path()), std::vector<std::string>{"part.cells"});
+}
+
+TEST(CellsWriter, AbortRemovesTheTemporaryAndTheFoldersItCreated) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "out" / "deep" / "part.cells");
+  auto layers = small_layers();
+  ASSERT_TRUE(sink->begin(small_run()));
+  ASSERT_TRUE(sink->add_layer(layers[0].result()));
+  EXPECT_FALSE(list_tree(dir.path()).empty());
+  sink->abort();
+  EXPECT_TRUE(list_tree(dir.path()).empty());
+}
+
+TEST(CellsWriter, AbortAfterFinishRemovesTheFinishedFile) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells");
+  ASSERT_TRUE(run_sink(*sink, small_run(), small_layers()));
+  ASSERT_TRUE(std::filesystem::exists(dir / "part.cells"));
+  sink->abort();
+  EXPECT_TRUE(list_tree(dir.path()).empty());
+}
+
+TEST(CellsWriter, AbortKeepsFoldersThatExistedBefore) {
+  ScratchDir dir;
+  std::filesystem::create_directory(dir / "out");
+  auto sink = make_cells_writer(dir / "out" / "part.cells");
+  ASSERT_TRUE(sink->begin(small_run()));
+  sink->abort();
+  EXPECT_EQ(list_tree(dir.path()), std::vector<std::string>{"out"});
+}
+
+TEST(CellsWriter, DestroyingAnUnfinishedSinkLeavesNothing) {
+  ScratchDir dir;
+  {
+    auto sink = make_cells_writer(dir / "new" / "part.cells");
+    auto layers = small_layers();
+    ASSERT_TRUE(sink->begin(small_run()));
+    ASSERT_TRUE(sink->add_layer(layers[0].result()));
+  }
+  EXPECT_TRUE(list_tree(dir.path()).empty());
+}
+
+TEST(CellsWriter, UnwritableTargetIsBadInput) {
+  ScratchDir dir;
+  testing::write_file_bytes(dir / "file", "x");
+  auto sink = make_cells_writer(dir / "file" / "part.cells");
+  auto begun = sink->begin(small_run());
+  ASSERT_FALSE(begun);
+  EXPECT_EQ(begun.error().code, ErrorCode::BadInput);
+}
+
+TEST(CellsWriter, RewritesEveryConformanceVectorByteForByte) {
+  ScratchDir dir;
+  const auto vectors = std::filesystem::path(STRATA_SHARED_DIR) / "vectors";
+  int checked = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(vectors)) {
+    if (entry.path().extension() != ".cells") continue;
+    SCOPED_TRACE(entry.path().filename().string());
+    auto file = read_cells(entry.path());
+    ASSERT_TRUE(file) << file.error().to_string();
+    SliceRunInfo run;
+    run.grid = file->header.grid;
+    run.options.shell_mm = file->header.shell_mm;
+    const std::uint64_t per_layer = run.grid.cells_per_layer();
+    std::vector<LayerData> layers(run.grid.nz);
+    for (std::uint32_t k = 0; k < run.grid.nz; ++k) {
+      layers[k].layer = k;
+      layers[k].z_mm = run.grid.zk(k);
+      layers[k].cells.assign(file->cells.begin() + k * per_layer,
+                             file->cells.begin() + (k + 1) * per_layer);
+    }
+    auto sink = make_cells_writer(dir / "again.cells");
+    ASSERT_TRUE(run_sink(*sink, run, layers));
+    EXPECT_EQ(read_file_bytes(dir / "again.cells"), read_file_bytes(entry.path()));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 7);
+}
+
+}  // namespace
+}  // namespace strata::io

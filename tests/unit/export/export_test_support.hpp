@@ -1,0 +1,153 @@
+#pragma once
+
+// Helpers of the export tests: a scratch folder, layers built by hand, running a sink over them.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "strata/pipeline/layer_sink.hpp"
+
+namespace strata::io::testing {
+
+/// A fresh folder under the system's temporary folder, removed with everything in it.
+class ScratchDir {
+ public:
+  ScratchDir() {
+    static std::atomic<int> counter{0};
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = "strata-export-";
+    if (info != nullptr) name += std::string(info->test_suite_name()) + "-" + info->name() + "-";
+    name += std::to_string(::getpid()) + "-" + std::to_string(counter++);
+    for (char& c : name) {
+      if (c == '/') c = '_';
+    }
+    path_ = std::filesystem::temp_directory_path() / name;
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+/// One layer's data, owned (LayerResult only refers to it).
+struct LayerData {
+  std::uint32_t layer = 0;
+  double z_mm = 0.0;
+  std::vector<CellClass> cells;
+  LayerContours contours;
+  std::vector<HatchSegment> hatches;
+
+  LayerResult result() const { return LayerResult{layer, z_mm, cells, contours, hatches}; }
+};
+
+inline CellClass code(int c) { return static_cast<CellClass>(c); }
+
+inline std::vector<CellClass> codes(std::initializer_list<int> values) {
+  std::vector<CellClass> out;
+  for (int v : values) out.push_back(code(v));
+  return out;
+}
+
+/// The 5 x 3 x 2 grid of the tests: origin (-1.5, 2.25, 0.125), cells 0.5 x 0.25 x 1, shell 0.75.
+inline SliceRunInfo small_run() {
+  SliceRunInfo run;
+  run.grid.x0 = -1.5;
+  run.grid.y0 = 2.25;
+  run.grid.z0 = 0.125;
+  run.grid.dx = 0.5;
+  run.grid.dy = 0.25;
+  run.grid.dz = 1.0;
+  run.grid.nx = 5;
+  run.grid.ny = 3;
+  run.grid.nz = 2;
+  run.options.shell_mm = 0.75;
+  run.model_name = "part";
+  return run;
+}
+
+/// Layers of small_run(): layer 0 has 5 empty, 6 interior, 4 boundary cells; layer 1 has 0, 3, 12.
+inline std::vector<LayerData> small_layers() {
+  std::vector<LayerData> layers(2);
+  layers[0].layer = 0;
+  layers[0].z_mm = 0.625;
+  layers[0].cells = codes({0, 1, 3, 3, 1,  //
+                           3, 0, 1, 0, 0,  //
+                           1, 1, 1, 3, 0});
+  layers[1].layer = 1;
+  layers[1].z_mm = 1.625;
+  layers[1].cells = codes({3, 3, 3, 3, 3,  //
+                           3, 1, 1, 1, 3,  //
+                           3, 3, 3, 3, 3});
+  return layers;
+}
+
+/// begin, every layer, finish; stops at the first error.
+inline Result<void> run_sink(LayerSink& sink, const SliceRunInfo& run,
+                             const std::vector<LayerData>& layers) {
+  if (auto ok = sink.begin(run); !ok) return ok;
+  for (const auto& layer : layers) {
+    if (auto ok = sink.add_layer(layer.result()); !ok) return ok;
+  }
+  return sink.finish();
+}
+
+inline std::string read_file_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+inline void write_file_bytes(const std::filesystem::path& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out << bytes;
+}
+
+/// Every file and folder below `dir`, relative, sorted.
+inline std::vector<std::string> list_tree(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    names.push_back(std::filesystem::relative(entry.path(), dir).generic_string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+/// Number of non-overlapping occurrences of `needle` in `text`.
+inline std::size_t count_of(const std::string& text, const std::string& needle) {
+  std::size_t count = 0;
+  for (std::size_t pos = text.find(needle); pos != std::string::npos;
+       pos = text.find(needle, pos + needle.size())) {
+    ++count;
+  }
+  return count;
+}
+
+/// The lines of a text.
+inline std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+}  // namespace strata::io::testing
