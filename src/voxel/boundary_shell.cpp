@@ -5,7 +5,7 @@
 #include <deque>
 #include <numeric>
 
-#include "voxel/point_triangle_distance_internal.hpp"
+#include "voxel/triangle_distance_filter_internal.hpp"
 
 namespace strata {
 
@@ -139,6 +139,7 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
     const Vec3& c = mesh_.vertices[tri[2]];
     if (std::max({a.z, b.z, c.z}) < z_lo) continue;
     if (!slab_footprint(a, b, c, z_lo, z_hi, box)) continue;
+    const detail::TriangleDistanceFilter near(a, b, c, t);
     const double grow = t * (1.0 + 1e-9);
     const auto [i0, i1] = centre_range(grid_.x0, grid_.dx, grid_.nx, box[0] - grow, box[2] + grow);
     const auto [j0, j1] = centre_range(grid_.y0, grid_.dy, grid_.ny, box[1] - grow, box[3] + grow);
@@ -148,7 +149,7 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
         CellClass& cell = out[static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i)];
         if (cell != CellClass::Interior) continue;
         const Vec3 p{grid_.xc(static_cast<std::uint32_t>(i)), yc, centre_z.z};
-        if (detail::triangle_closer_than(p, a, b, c, t)) cell = CellClass::Boundary;
+        if (near.closer_than(p)) cell = CellClass::Boundary;
       }
     }
   }

@@ -1,0 +1,175 @@
+#pragma once
+
+// A double filter in front of triangle_closer_than(): most (cell, facet) pairs are decided by
+// bounds that hold despite rounding, and only the pairs within the rounding bands reach the
+// exact predicate.
+//  - accept: a computed point q of the triangle (a convex combination) with |p - q| + error < t;
+//  - reject: the distance to the facet's bounding box, or to the plane of the facet combined with
+//    the half-plane of one of its edges, exceeds t by more than its rounding error.
+// Error bounds are forward bounds in units of the unit roundoff u, taken generously (each
+// constant is at least twice what the operation count gives).
+
+#include <algorithm>
+#include <cmath>
+
+#include "voxel/point_triangle_distance_internal.hpp"
+
+namespace strata::detail {
+
+class TriangleDistanceFilter {
+ public:
+  TriangleDistanceFilter(const Vec3& a, const Vec3& b, const Vec3& c, double t)
+      : a_(a), b_(b), c_(c), t_(t), t2_(t * t) {
+    const Vec3* v[3] = {&a, &b, &c};
+    lo_ = hi_ = a;
+    for (const Vec3* p : v) {
+      lo_ = {std::min(lo_.x, p->x), std::min(lo_.y, p->y), std::min(lo_.z, p->z)};
+      hi_ = {std::max(hi_.x, p->x), std::max(hi_.y, p->y), std::max(hi_.z, p->z)};
+    }
+    e1_ = sub(b, a);
+    e2_ = sub(c, a);
+    scale_ = std::max({max_abs(e1_), max_abs(e2_), max_abs(sub(c, b))});
+    n_ = cross(e1_, e2_);
+    nn_ = dot(n_, n_);
+    const double l2 = scale_ * scale_;
+    err_nn_ = 400.0 * kU * l2 * l2;
+    has_plane_ = nn_ > 2.0 * err_nn_;
+    if (has_plane_) {
+      for (int i = 0; i < 3; ++i) {
+        const Vec3 e = sub(*v[(i + 1) % 3], *v[i]);
+        m_[i] = cross(e, n_);  // outward in-plane normal of edge i
+        mm_[i] = dot(m_[i], m_[i]);
+      }
+    }
+    coord_scale_ = std::max(max_abs(a), max_abs(b));
+    coord_scale_ = std::max(coord_scale_, max_abs(c));
+  }
+
+  /// Exactly whether the distance from p to the triangle is less than t.
+  bool closer_than(const Vec3& p) const {
+    const int quick = decide(p);
+    if (quick != kUndecided) return quick == kCloser;
+    return triangle_closer_than(p, a_, b_, c_, t_);
+  }
+
+  /// For tests: 1 closer, 0 not closer, -1 left to the exact predicate.
+  int decide(const Vec3& p) const {
+    // Reject by the bounding box.
+    const double bx = std::max({lo_.x - p.x, 0.0, p.x - hi_.x});
+    const double by = std::max({lo_.y - p.y, 0.0, p.y - hi_.y});
+    const double bz = std::max({lo_.z - p.z, 0.0, p.z - hi_.z});
+    if ((bx * bx + by * by + bz * bz) * (1.0 - 16.0 * kU) > t2_ * (1.0 + 16.0 * kU))
+      return kFarther;
+
+    // Accept by a point of the triangle.
+    const double p_scale = max_abs(p);
+    const Vec3 q = closest_point_estimate(p);
+    const Vec3 d = sub(p, q);
+    const double dist = std::sqrt(dot(d, d));
+    const double q_error = 16.0 * kU * (coord_scale_ + p_scale + 2.0 * scale_) * 1.7320508075688772;
+    if (dist * (1.0 + 16.0 * kU) + q_error < t_ * (1.0 - 16.0 * kU)) return kCloser;
+
+    // Reject by the plane and an edge's half-plane: the triangle lies in their intersection.
+    if (has_plane_) {
+      const double l2 = scale_ * scale_;
+      const Vec3 w = sub(p, a_);
+      const double w_scale = std::max({max_abs(w), max_abs(sub(p, b_)), max_abs(sub(p, c_))});
+      const double nw = std::fabs(dot(n_, w));
+      const double err_nw = 100.0 * kU * l2 * w_scale;
+      const double plane_num = std::max(0.0, nw - err_nw);
+      const double plane2 = plane_num * plane_num / (nn_ + err_nn_);
+      double edge2 = 0.0;
+      const Vec3* v[3] = {&a_, &b_, &c_};
+      const double err_m_dot = 600.0 * kU * l2 * scale_ * w_scale;
+      const double err_mm = 6000.0 * kU * l2 * l2 * l2;
+      for (int i = 0; i < 3; ++i) {
+        if (!(mm_[i] > 2.0 * err_mm)) continue;
+        const double mw = dot(m_[i], sub(p, *v[i])) - err_m_dot;
+        if (mw > 0.0) edge2 = std::max(edge2, mw * mw / (mm_[i] + err_mm));
+      }
+      if ((plane2 + edge2) * (1.0 - 64.0 * kU) > t2_ * (1.0 + 64.0 * kU)) return kFarther;
+    }
+    return kUndecided;
+  }
+
+  static constexpr int kCloser = 1;
+  static constexpr int kFarther = 0;
+  static constexpr int kUndecided = -1;
+
+ private:
+  static constexpr double kU = 0x1p-53;
+
+  static Vec3 sub(const Vec3& p, const Vec3& q) { return {p.x - q.x, p.y - q.y, p.z - q.z}; }
+  static double dot(const Vec3& p, const Vec3& q) { return p.x * q.x + p.y * q.y + p.z * q.z; }
+  static Vec3 cross(const Vec3& p, const Vec3& q) {
+    return {p.y * q.z - p.z * q.y, p.z * q.x - p.x * q.z, p.x * q.y - p.y * q.x};
+  }
+  static double max_abs(const Vec3& p) {
+    return std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  }
+
+  /// A point of the triangle near the closest one (Voronoi regions of the triangle), returned as
+  /// a + v e1 + w e2 with v, w >= 0 and v + w <= 1, so it is a convex combination whatever the
+  /// rounding in the region tests.
+  Vec3 closest_point_estimate(const Vec3& p) const {
+    const Vec3 ap = sub(p, a_);
+    const double d1 = dot(e1_, ap);
+    const double d2 = dot(e2_, ap);
+    double v = 0.0, w = 0.0;
+    if (d1 <= 0.0 && d2 <= 0.0) return combine(0.0, 0.0);
+    const Vec3 bp = sub(p, b_);
+    const double d3 = dot(e1_, bp);
+    const double d4 = dot(e2_, bp);
+    if (d3 >= 0.0 && d4 <= d3) return combine(1.0, 0.0);
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+      v = d1 - d3 != 0.0 ? d1 / (d1 - d3) : 0.0;
+      return combine(v, 0.0);
+    }
+    const Vec3 cp = sub(p, c_);
+    const double d5 = dot(e1_, cp);
+    const double d6 = dot(e2_, cp);
+    if (d6 >= 0.0 && d5 <= d6) return combine(0.0, 1.0);
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+      w = d2 - d6 != 0.0 ? d2 / (d2 - d6) : 0.0;
+      return combine(0.0, w);
+    }
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+      const double denom = (d4 - d3) + (d5 - d6);
+      w = denom != 0.0 ? (d4 - d3) / denom : 0.0;
+      return combine(1.0 - w, w);
+    }
+    const double sum = va + vb + vc;
+    if (!(sum > 0.0)) return combine(0.0, 0.0);
+    v = vb / sum;
+    w = vc / sum;
+    return combine(v, w);
+  }
+
+  Vec3 combine(double v, double w) const {
+    v = std::clamp(std::isfinite(v) ? v : 0.0, 0.0, 1.0);
+    w = std::clamp(std::isfinite(w) ? w : 0.0, 0.0, 1.0);
+    if (v + w > 1.0) {
+      const double s = v + w;
+      v /= s;
+      w /= s;
+      // Division may round v + w just above 1: take w as what is left.
+      w = std::min(w, 1.0 - v);
+    }
+    return {a_.x + v * e1_.x + w * e2_.x, a_.y + v * e1_.y + w * e2_.y,
+            a_.z + v * e1_.z + w * e2_.z};
+  }
+
+  Vec3 a_, b_, c_;
+  double t_, t2_;
+  Vec3 lo_, hi_;
+  Vec3 e1_, e2_, n_;
+  double nn_ = 0.0, err_nn_ = 0.0, scale_ = 0.0, coord_scale_ = 0.0;
+  bool has_plane_ = false;
+  Vec3 m_[3];
+  double mm_[3] = {0.0, 0.0, 0.0};
+};
+
+}  // namespace strata::detail
