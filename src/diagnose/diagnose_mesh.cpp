@@ -1,0 +1,579 @@
+#include "strata/diagnose/diagnose_mesh.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <string>
+#include <tuple>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "diagnose/exact_geometry_internal.hpp"
+#include "diagnose/find_self_intersections_internal.hpp"
+#include "strata/core/error.hpp"
+
+namespace strata::diagnose {
+
+const char* verdict_name(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::Printable:
+      return "printable";
+    case Verdict::PrintableUnderRule:
+      return "printable-under-rule";
+    case Verdict::NeedsRepair:
+      return "needs-repair";
+  }
+  return "unknown";
+}
+
+namespace {
+
+/// Counts occurrences and keeps the kMaxLocations with the smallest keys (ties: first added).
+template <class T>
+class FirstOccurrences {
+ public:
+  void add(std::uint64_t key, const T& location) {
+    ++count_;
+    items_.push_back({key, location});
+    if (items_.size() >= 4 * kMaxLocations) trim();
+  }
+
+  Occurrences<T> finish() {
+    trim();
+    Occurrences<T> out;
+    out.count = count_;
+    out.locations.reserve(items_.size());
+    for (const auto& item : items_) out.locations.push_back(item.second);
+    return out;
+  }
+
+ private:
+  void trim() {
+    std::stable_sort(items_.begin(), items_.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    if (items_.size() > kMaxLocations) items_.resize(kMaxLocations);
+  }
+
+  std::size_t count_ = 0;
+  std::vector<std::pair<std::uint64_t, T>> items_;
+};
+
+class UnionFind {
+ public:
+  explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0U); }
+
+  std::uint32_t find(std::uint32_t x) {
+    while (parent_[x] != x) {
+      parent_[x] = parent_[parent_[x]];
+      x = parent_[x];
+    }
+    return x;
+  }
+
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return;
+    // The smaller index becomes the root, so a component's root is its lowest member.
+    if (a < b) {
+      parent_[b] = a;
+    } else {
+      parent_[a] = b;
+    }
+  }
+
+ private:
+  std::vector<std::uint32_t> parent_;
+};
+
+/// One use of an undirected edge by a facet.
+struct EdgeUse {
+  VertexIndex lo = 0;
+  VertexIndex hi = 0;
+  FacetIndex facet = 0;
+  bool forward = false;  ///< the facet runs the edge from lo to hi
+};
+
+/// The edge uses of every facet not in `skip` (zero-length edges left out), sorted by edge and
+/// then facet.
+std::vector<EdgeUse> collect_edge_uses(const IndexedMesh& mesh, const std::vector<bool>& skip) {
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * mesh.triangles.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (skip[f]) continue;
+    const auto& t = mesh.triangles[f];
+    for (int c = 0; c < 3; ++c) {
+      const VertexIndex a = t[c];
+      const VertexIndex b = t[(c + 1) % 3];
+      if (a == b) continue;  // a zero-length edge joins nothing
+      uses.push_back({std::min(a, b), std::max(a, b), static_cast<FacetIndex>(f), a < b});
+    }
+  }
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+    return std::tie(x.lo, x.hi, x.facet, x.forward) < std::tie(y.lo, y.hi, y.facet, y.forward);
+  });
+  return uses;
+}
+
+double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+  const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+  const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  return 0.5 * std::sqrt(nx * nx + ny * ny + nz * nz);
+}
+
+bool strictly_inside(const Bbox3& inner, const Bbox3& outer) {
+  return outer.min.x < inner.min.x && outer.min.y < inner.min.y && outer.min.z < inner.min.z &&
+         inner.max.x < outer.max.x && inner.max.y < outer.max.y && inner.max.z < outer.max.z;
+}
+
+struct CellKey {
+  std::int64_t x, y, z;
+  friend bool operator==(const CellKey&, const CellKey&) = default;
+};
+
+struct CellKeyHash {
+  std::size_t operator()(const CellKey& k) const {
+    std::uint64_t h = static_cast<std::uint64_t>(k.x) * 0x9E3779B97F4A7C15ULL;
+    h ^= static_cast<std::uint64_t>(k.y) * 0xC2B2AE3D27D4EB4FULL + (h << 6) + (h >> 2);
+    h ^= static_cast<std::uint64_t>(k.z) * 0x165667B19E3779F9ULL + (h << 6) + (h >> 2);
+    return static_cast<std::size_t>(h);
+  }
+};
+
+std::int64_t cell_coordinate(double offset, double cell) {
+  // Clamped so that absurd tolerances cannot overflow; clamping only merges far cells, which
+  // costs time, never a missed pair.
+  const double q = std::floor(offset / cell);
+  constexpr double kLimit = 4.0e18;
+  return static_cast<std::int64_t>(std::clamp(q, -kLimit, kLimit));
+}
+
+/// Pairs of distinct vertices closer than `tolerance`, found through a grid hash whose cells are
+/// twice that size, so that the ball around a vertex meets at most 2 x 2 x 2 cells.
+void find_near_vertices(const IndexedMesh& mesh, const Bbox3& bounds, double tolerance,
+                        std::size_t max_checks, MeshReport& report) {
+  const std::size_t nv = mesh.vertices.size();
+  const double cell = 2.0 * tolerance;
+  const auto offset = [&](const Vec3& p) {
+    return Vec3{p.x - bounds.min.x, p.y - bounds.min.y, p.z - bounds.min.z};
+  };
+  std::vector<CellKey> keys(nv);
+  for (std::size_t i = 0; i < nv; ++i) {
+    const Vec3 o = offset(mesh.vertices[i]);
+    keys[i] = {cell_coordinate(o.x, cell), cell_coordinate(o.y, cell), cell_coordinate(o.z, cell)};
+  }
+  std::vector<VertexIndex> order(nv);
+  std::iota(order.begin(), order.end(), 0U);
+  std::sort(order.begin(), order.end(), [&](VertexIndex a, VertexIndex b) {
+    return std::tie(keys[a].x, keys[a].y, keys[a].z, a) <
+           std::tie(keys[b].x, keys[b].y, keys[b].z, b);
+  });
+  std::unordered_map<CellKey, std::pair<std::size_t, std::size_t>, CellKeyHash> cells;
+  cells.reserve(nv);
+  for (std::size_t begin = 0; begin < nv;) {
+    std::size_t end = begin + 1;
+    while (end < nv && keys[order[end]] == keys[order[begin]]) ++end;
+    cells.emplace(keys[order[begin]], std::make_pair(begin, end));
+    begin = end;
+  }
+
+  FirstOccurrences<PointPair> near;
+  const double tolerance2 = tolerance * tolerance;
+  std::size_t checks = 0;
+  for (std::size_t i = 0; i < nv && !report.near_vertices_truncated; ++i) {
+    const Vec3& p = mesh.vertices[i];
+    const Vec3 o = offset(p);
+    const CellKey lo{cell_coordinate(o.x - tolerance, cell), cell_coordinate(o.y - tolerance, cell),
+                     cell_coordinate(o.z - tolerance, cell)};
+    const CellKey hi{cell_coordinate(o.x + tolerance, cell), cell_coordinate(o.y + tolerance, cell),
+                     cell_coordinate(o.z + tolerance, cell)};
+    for (std::int64_t cx = lo.x; cx <= hi.x; ++cx) {
+      for (std::int64_t cy = lo.y; cy <= hi.y; ++cy) {
+        for (std::int64_t cz = lo.z; cz <= hi.z; ++cz) {
+          const auto it = cells.find({cx, cy, cz});
+          if (it == cells.end()) continue;
+          for (std::size_t s = it->second.first; s < it->second.second; ++s) {
+            const VertexIndex j = order[s];
+            if (j <= i) continue;  // each pair once, from its lower vertex
+            if (++checks > max_checks) {
+              report.near_vertices_truncated = true;
+              break;
+            }
+            const Vec3& q = mesh.vertices[j];
+            const double ex = q.x - p.x, ey = q.y - p.y, ez = q.z - p.z;
+            if (ex * ex + ey * ey + ez * ez < tolerance2) near.add(i, {p, q});
+          }
+        }
+      }
+    }
+  }
+  report.near_vertices = near.finish();
+}
+
+/// Vertices whose non-degenerate facets split into several fans (edge-connected around it).
+void find_non_manifold_vertices(const IndexedMesh& mesh, const std::vector<bool>& degenerate,
+                                MeshReport& report) {
+  const std::size_t nv = mesh.vertices.size();
+  std::vector<std::size_t> start(nv + 1, 0);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (degenerate[f]) continue;
+    for (VertexIndex v : mesh.triangles[f]) ++start[v + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<FacetIndex> incident(start[nv]);
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (degenerate[f]) continue;
+    for (VertexIndex v : mesh.triangles[f]) incident[fill[v]++] = static_cast<FacetIndex>(f);
+  }
+
+  FirstOccurrences<Vec3> found;
+  std::vector<std::pair<VertexIndex, std::uint32_t>> neighbours;  // (other vertex, local facet)
+  for (std::size_t v = 0; v < nv; ++v) {
+    const std::size_t n = start[v + 1] - start[v];
+    if (n < 2) continue;
+    neighbours.clear();
+    for (std::size_t k = 0; k < n; ++k) {
+      for (VertexIndex w : mesh.triangles[incident[start[v] + k]]) {
+        if (w != v) neighbours.push_back({w, static_cast<std::uint32_t>(k)});
+      }
+    }
+    std::sort(neighbours.begin(), neighbours.end());
+    UnionFind fans(n);
+    for (std::size_t s = 1; s < neighbours.size(); ++s) {
+      if (neighbours[s].first == neighbours[s - 1].first) {
+        fans.unite(neighbours[s].second, neighbours[s - 1].second);
+      }
+    }
+    std::size_t num_fans = 0;
+    for (std::uint32_t k = 0; k < n; ++k) num_fans += fans.find(k) == k ? 1 : 0;
+    if (num_fans > 1) found.add(v, mesh.vertices[v]);
+  }
+  report.non_manifold_vertices = found.finish();
+}
+
+std::string plural(std::size_t n, const char* singular, const char* plural_form) {
+  return fmt::format("{} {}", n, n == 1 ? singular : plural_form);
+}
+
+void judge(MeshReport& r) {
+  std::vector<std::string> reasons;
+  if (r.num_facets == 0) {
+    r.verdict = Verdict::NeedsRepair;
+    r.verdict_reason = "the mesh has no facets";
+    return;
+  }
+  const std::string open_edges =
+      fmt::format("{} in {}", plural(r.boundary_edges.count, "open edge", "open edges"),
+                  plural(r.num_boundary_loops, "loop", "loops"));
+  const std::string inconsistent = plural(
+      r.inconsistent_edges.count, "inconsistently oriented edge", "inconsistently oriented edges");
+  if (!r.unbalanced_edges.empty()) {
+    if (!r.boundary_edges.empty()) reasons.push_back(open_edges);
+    if (!r.inconsistent_edges.empty()) reasons.push_back(inconsistent);
+    if (reasons.empty()) {
+      // Facets repeated without their counterpart, or open edges of zero-area facets.
+      reasons.push_back(fmt::format("{} used more often in one direction than the other",
+                                    plural(r.unbalanced_edges.count, "edge", "edges")));
+    }
+    r.verdict = Verdict::NeedsRepair;
+    r.verdict_reason =
+        fmt::format("{}: the inside of the solid is not defined there", fmt::join(reasons, "; "));
+    return;
+  }
+  // Balanced over all facets, yet open or inconsistent among the facets with area: zero-area
+  // facets seal the gaps (T-junctions), which the slicer's topology follows.
+  if (!r.boundary_edges.empty()) reasons.push_back(open_edges + " sealed by zero-area facets");
+  if (!r.inconsistent_edges.empty())
+    reasons.push_back(inconsistent + " sealed by zero-area facets");
+  if (!r.duplicate_facets.empty()) {
+    reasons.push_back(plural(r.duplicate_facets.count, "duplicate facet", "duplicate facets"));
+  }
+  if (!r.degenerate_facets.empty()) {
+    reasons.push_back(plural(r.degenerate_facets.count, "degenerate facet", "degenerate facets"));
+  }
+  if (!r.non_manifold_edges.empty()) {
+    reasons.push_back(
+        plural(r.non_manifold_edges.count, "non-manifold edge", "non-manifold edges"));
+  }
+  if (!r.non_manifold_vertices.empty()) {
+    reasons.push_back(
+        plural(r.non_manifold_vertices.count, "non-manifold vertex", "non-manifold vertices"));
+  }
+  if (!r.self_intersections.empty()) {
+    reasons.push_back(fmt::format("{}{}", r.self_intersections_truncated ? "at least " : "",
+                                  plural(r.self_intersections.count, "self-intersecting facet pair",
+                                         "self-intersecting facet pairs")));
+  } else if (r.self_intersections_truncated) {
+    reasons.push_back("self-intersection search cut short");
+  }
+  if (!r.inverted_shells.empty()) {
+    reasons.push_back(plural(r.inverted_shells.count, "inverted shell", "inverted shells"));
+  }
+  if (!reasons.empty()) {
+    r.verdict = Verdict::PrintableUnderRule;
+    r.verdict_reason =
+        fmt::format("{}; every edge is balanced, so the nonzero fill rule slices it as intended",
+                    fmt::join(reasons, "; "));
+    return;
+  }
+  r.verdict = Verdict::Printable;
+  r.verdict_reason = fmt::format(
+      "closed, consistently oriented and manifold, {}",
+      r.self_intersections_checked ? "no self-intersections" : "self-intersections not checked");
+}
+
+}  // namespace
+
+MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
+                         const DiagnoseOptions& options) {
+  const std::size_t nf = mesh.triangles.size();
+  const std::size_t nv = mesh.vertices.size();
+  for (const auto& t : mesh.triangles) {
+    STRATA_ASSERT(t[0] < nv && t[1] < nv && t[2] < nv, "facet refers to a missing vertex");
+  }
+  STRATA_ASSERT(nf <= 0xFFFFFFFFU, "facet indices are 32-bit");
+
+  MeshReport report;
+  report.num_input_facets = soup.triangles.size();
+  report.num_facets = nf;
+  report.num_vertices = nv;
+  report.bounds = mesh.bounds();
+
+  // ---- facets: degenerate, area, duplicates
+  std::vector<bool> degenerate(nf, false);
+  {
+    FirstOccurrences<FacetIndex> found;
+    double area = 0.0;
+    for (std::size_t f = 0; f < nf; ++f) {
+      const auto& t = mesh.triangles[f];
+      const Vec3& a = mesh.vertices[t[0]];
+      const Vec3& b = mesh.vertices[t[1]];
+      const Vec3& c = mesh.vertices[t[2]];
+      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || detail::is_collinear(a, b, c)) {
+        degenerate[f] = true;
+        found.add(f, static_cast<FacetIndex>(f));
+      } else {
+        area += triangle_area(a, b, c);
+      }
+    }
+    report.degenerate_facets = found.finish();
+    report.surface_area_mm2 = area;
+  }
+  {
+    // Among facets with area: zero-area facets are reported as degenerate only.
+    std::vector<std::pair<std::array<VertexIndex, 3>, FacetIndex>> keyed;
+    keyed.reserve(nf);
+    for (std::size_t f = 0; f < nf; ++f) {
+      if (degenerate[f]) continue;
+      auto key = mesh.triangles[f];
+      std::sort(key.begin(), key.end());
+      keyed.emplace_back(key, static_cast<FacetIndex>(f));
+    }
+    std::sort(keyed.begin(), keyed.end());
+    FirstOccurrences<FacetIndex> found;
+    for (std::size_t s = 1; s < keyed.size(); ++s) {
+      if (keyed[s].first == keyed[s - 1].first) found.add(keyed[s].second, keyed[s].second);
+    }
+    report.duplicate_facets = found.finish();
+  }
+
+  // ---- edges and shells
+  // The reported topology is that of the facets with area: a zero-area facet bounds nothing, and
+  // repair tools drop it first. The balance that decides whether the winding number is defined
+  // takes every facet, since zero-area facets can seal cracks (T-junctions) for the slicer.
+  const std::vector<EdgeUse> uses = collect_edge_uses(mesh, degenerate);
+  UnionFind facet_sets(nf);
+  for (std::size_t s = 1; s < uses.size(); ++s) {
+    if (uses[s].lo == uses[s - 1].lo && uses[s].hi == uses[s - 1].hi) {
+      facet_sets.unite(uses[s].facet, uses[s - 1].facet);
+    }
+  }
+  constexpr std::uint32_t kNone = 0xFFFFFFFFU;
+  std::vector<std::uint32_t> shell_of_facet(nf, kNone);
+  std::vector<std::uint32_t> shell_of_root(nf, kNone);
+  std::vector<ShellReport> shells;
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (degenerate[f]) continue;
+    const std::uint32_t root = facet_sets.find(static_cast<std::uint32_t>(f));
+    if (shell_of_root[root] == kNone) {
+      shell_of_root[root] = static_cast<std::uint32_t>(shells.size());
+      ShellReport shell;
+      shell.first_facet = static_cast<FacetIndex>(f);
+      shell.is_closed = true;
+      shell.is_balanced = true;
+      shells.push_back(shell);
+    }
+    shell_of_facet[f] = shell_of_root[root];
+    ++shells[shell_of_facet[f]].num_facets;
+  }
+  const auto edge_groups = [](const std::vector<EdgeUse>& all, auto&& visit) {
+    for (std::size_t begin = 0; begin < all.size();) {
+      std::size_t end = begin + 1;
+      while (end < all.size() && all[end].lo == all[begin].lo && all[end].hi == all[begin].hi) {
+        ++end;
+      }
+      std::size_t forward = 0;
+      for (std::size_t s = begin; s < end; ++s) forward += all[s].forward ? 1 : 0;
+      visit(all[begin], end - begin, forward);
+      begin = end;
+    }
+  };
+  const auto& v = mesh.vertices;
+  const auto as_run = [&v](const EdgeUse& use) {
+    return use.forward ? EdgeLocation{v[use.lo], v[use.hi]} : EdgeLocation{v[use.hi], v[use.lo]};
+  };
+  {
+    FirstOccurrences<EdgeLocation> unbalanced;
+    edge_groups(collect_edge_uses(mesh, std::vector<bool>(nf, false)),
+                [&](const EdgeUse& first, std::size_t n, std::size_t forward) {
+                  if (2 * forward != n) unbalanced.add(first.facet, as_run(first));
+                });
+    report.unbalanced_edges = unbalanced.finish();
+  }
+  {
+    FirstOccurrences<EdgeLocation> boundary, non_manifold, inconsistent;
+    std::vector<std::pair<VertexIndex, VertexIndex>> boundary_pairs;
+    edge_groups(uses, [&](const EdgeUse& first, std::size_t n, std::size_t forward) {
+      // `first` is the use by the lowest facet.
+      ShellReport& shell = shells[shell_of_facet[first.facet]];
+      if (n == 1) {
+        boundary.add(first.facet, as_run(first));
+        boundary_pairs.emplace_back(first.lo, first.hi);
+      }
+      if (n > 2) non_manifold.add(first.facet, {v[first.lo], v[first.hi]});
+      if (n == 2 && forward != 1) inconsistent.add(first.facet, as_run(first));
+      if (2 * forward != n) shell.is_balanced = false;
+      if (n % 2 == 1) shell.is_closed = false;
+    });
+    report.boundary_edges = boundary.finish();
+    report.non_manifold_edges = non_manifold.finish();
+    report.inconsistent_edges = inconsistent.finish();
+
+    // Boundary loops: connected components of the graph of boundary edges.
+    std::vector<VertexIndex> ends;
+    ends.reserve(2 * boundary_pairs.size());
+    for (const auto& [a, b] : boundary_pairs) {
+      ends.push_back(a);
+      ends.push_back(b);
+    }
+    std::sort(ends.begin(), ends.end());
+    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    const auto local = [&](VertexIndex x) {
+      return static_cast<std::uint32_t>(std::lower_bound(ends.begin(), ends.end(), x) -
+                                        ends.begin());
+    };
+    UnionFind loops(ends.size());
+    for (const auto& [a, b] : boundary_pairs) loops.unite(local(a), local(b));
+    std::size_t num_loops = 0;
+    for (std::uint32_t k = 0; k < ends.size(); ++k) num_loops += loops.find(k) == k ? 1 : 0;
+    report.num_boundary_loops = num_loops;
+  }
+
+  // ---- volumes and shell judgement
+  {
+    // Zero-area facets add exactly zero volume; they are summed in an extra group.
+    std::vector<std::uint32_t> group_of_facet = shell_of_facet;
+    for (auto& g : group_of_facet) g = g == kNone ? static_cast<std::uint32_t>(shells.size()) : g;
+    const detail::ExactVolumes volumes =
+        detail::exact_signed_volumes(mesh, group_of_facet, shells.size() + 1);
+    report.volume_mm3 = volumes.total_mm3;
+    std::vector<Bbox3> shell_bounds(shells.size());
+    for (std::size_t f = 0; f < nf; ++f) {
+      if (shell_of_facet[f] == kNone) continue;
+      for (VertexIndex x : mesh.triangles[f]) shell_bounds[shell_of_facet[f]].add(mesh.vertices[x]);
+    }
+    std::vector<std::size_t> positive;
+    for (std::size_t s = 0; s < shells.size(); ++s) {
+      ShellReport& shell = shells[s];
+      shell.signed_volume_mm3 = volumes.by_group_mm3[s];
+      shell.is_balanced = shell.is_balanced && shell.is_closed;
+      if (shell.is_closed) ++report.num_closed_shells;
+      if (shell.is_balanced && shell.signed_volume_mm3 > 0.0) positive.push_back(s);
+    }
+    // A negative shell inside a positive one is the inner wall of a hollow part; the bounding
+    // boxes decide, and the comparisons are capped for meshes made of very many shells.
+    constexpr std::size_t kMaxContainmentTests = 50'000'000;
+    std::size_t tests = 0;
+    FirstOccurrences<std::size_t> inverted;
+    for (std::size_t s = 0; s < shells.size(); ++s) {
+      ShellReport& shell = shells[s];
+      if (!shell.is_balanced || !(shell.signed_volume_mm3 < 0.0)) continue;
+      for (std::size_t p : positive) {
+        if (++tests > kMaxContainmentTests) break;
+        if (strictly_inside(shell_bounds[s], shell_bounds[p])) {
+          shell.is_cavity = true;
+          break;
+        }
+      }
+      if (!shell.is_cavity) {
+        shell.is_inverted = true;
+        inverted.add(s, s);
+      }
+    }
+    report.inverted_shells = inverted.finish();
+  }
+  report.shells = std::move(shells);
+
+  // ---- vertices
+  find_non_manifold_vertices(mesh, degenerate, report);
+  if (!report.bounds.empty() && nv >= 2) {
+    const Vec3 lo = report.bounds.min, hi = report.bounds.max;
+    const double diagonal =
+        std::sqrt((hi.x - lo.x) * (hi.x - lo.x) + (hi.y - lo.y) * (hi.y - lo.y) +
+                  (hi.z - lo.z) * (hi.z - lo.z));
+    const double tolerance = options.near_vertex_mm.value_or(1e-6 * diagonal);
+    report.near_vertex_tolerance_mm = tolerance;
+    if (tolerance > 0.0 && std::isfinite(tolerance)) {
+      find_near_vertices(mesh, report.bounds, tolerance, options.max_near_vertex_checks, report);
+    }
+  }
+
+  // ---- stored normals
+  if (!soup.stored_normals.empty() && soup.stored_normals.size() == nf) {
+    report.normals_checked = true;
+    FirstOccurrences<FacetIndex> flipped, zero, non_finite;
+    for (std::size_t f = 0; f < nf; ++f) {
+      const Vec3& n = soup.stored_normals[f];
+      const auto id = static_cast<FacetIndex>(f);
+      if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) {
+        non_finite.add(f, id);
+      } else if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) {
+        zero.add(f, id);
+      } else if (!degenerate[f]) {
+        const auto& t = mesh.triangles[f];
+        if (detail::normal_agreement_sign(n, mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                          mesh.vertices[t[2]]) < 0) {
+          flipped.add(f, id);
+        }
+      }
+    }
+    report.flipped_normals = flipped.finish();
+    report.zero_normals = zero.finish();
+    report.non_finite_normals = non_finite.finish();
+  }
+
+  // ---- self-intersections
+  if (options.check_self_intersections) {
+    report.self_intersections_checked = true;
+    const detail::SelfIntersections found =
+        detail::find_self_intersections(mesh, degenerate, options.max_self_intersection_pairs,
+                                        options.max_self_intersection_candidates);
+    report.self_intersections.count = found.pairs.size();
+    const std::size_t kept = std::min(found.pairs.size(), kMaxLocations);
+    report.self_intersections.locations.assign(found.pairs.begin(), found.pairs.begin() + kept);
+    report.self_intersections_truncated = found.truncated;
+  }
+
+  judge(report);
+  return report;
+}
+
+}  // namespace strata::diagnose

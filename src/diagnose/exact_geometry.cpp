@@ -1,0 +1,149 @@
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <gmpxx.h>
+#include <mpfr.h>
+
+#include <algorithm>
+#include <bit>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <vector>
+
+#include "diagnose/exact_geometry_internal.hpp"
+#include "strata/core/error.hpp"
+
+namespace strata::diagnose::detail {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+Kernel::Point_3 to_point(const Vec3& p) { return {p.x, p.y, p.z}; }
+
+mpq_class exact_det(const Vec3& n, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const mpq_class ux = mpq_class(b.x) - a.x, uy = mpq_class(b.y) - a.y, uz = mpq_class(b.z) - a.z;
+  const mpq_class vx = mpq_class(c.x) - a.x, vy = mpq_class(c.y) - a.y, vz = mpq_class(c.z) - a.z;
+  return n.x * (uy * vz - uz * vy) + n.y * (uz * vx - ux * vz) + n.z * (ux * vy - uy * vx);
+}
+
+/// A double as mantissa * 2^exponent with an odd (or zero) integer mantissa.
+struct Dyadic {
+  std::int64_t mantissa = 0;
+  int exponent = 0;
+};
+
+Dyadic to_dyadic(double x) {
+  if (x == 0.0) return {};
+  int e = 0;
+  const double m = std::frexp(x, &e);  // x = m * 2^e, 0.5 <= |m| < 1
+  auto mantissa = static_cast<std::int64_t>(std::ldexp(m, 53));
+  int exponent = e - 53;
+  const int zeros = std::countr_zero(static_cast<std::uint64_t>(std::llabs(mantissa)));
+  mantissa >>= zeros;  // exact: the low bits are zero
+  exponent += zeros;
+  return {mantissa, exponent};
+}
+
+double round_to_double(const mpz_class& sum, int scale_exponent) {
+  // value = sum * 2^scale_exponent / 6, rounded once.
+  mpq_class q(sum, 6);
+  q.canonicalize();
+  if (scale_exponent >= 0) {
+    mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(scale_exponent));
+  } else {
+    mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-scale_exponent));
+  }
+  mpfr_t r;
+  mpfr_init2(r, 53);
+  mpfr_set_q(r, q.get_mpq_t(), MPFR_RNDN);
+  const double d = mpfr_get_d(r, MPFR_RNDN);
+  mpfr_clear(r);
+  return d;
+}
+
+}  // namespace
+
+bool is_collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return CGAL::collinear(to_point(a), to_point(b), to_point(c));
+}
+
+int normal_agreement_sign(const Vec3& n, const Vec3& a, const Vec3& b, const Vec3& c) {
+  // Filter: each of the six products n_i u_j v_k carries a relative error of a few ulps (the
+  // differences u = b - a, v = c - a are rounded once); 1e-14 of their absolute sum bounds the
+  // error of the sum with a wide margin. Ties and tiny magnitudes go to exact rationals.
+  const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
+  const double vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+  const double d =
+      n.x * (uy * vz - uz * vy) + n.y * (uz * vx - ux * vz) + n.z * (ux * vy - uy * vx);
+  const double bound = std::abs(n.x) * (std::abs(uy * vz) + std::abs(uz * vy)) +
+                       std::abs(n.y) * (std::abs(uz * vx) + std::abs(ux * vz)) +
+                       std::abs(n.z) * (std::abs(ux * vy) + std::abs(uy * vx));
+  if (std::isfinite(d) && std::isfinite(bound) && bound > 1e-200 && std::abs(d) > 1e-14 * bound) {
+    return d > 0 ? 1 : -1;
+  }
+  return sgn(exact_det(n, a, b, c));
+}
+
+ExactVolumes exact_signed_volumes(const IndexedMesh& mesh,
+                                  const std::vector<std::uint32_t>& group_of_facet,
+                                  std::size_t num_groups) {
+  STRATA_ASSERT(group_of_facet.size() == mesh.triangles.size(), "one group per facet");
+  // All coordinates become integers times one common power of two, so the determinants are
+  // integer products and the sums need no gcd: exact and fast.
+  const std::size_t nv = mesh.vertices.size();
+  std::vector<Dyadic> dyadic(3 * nv);
+  int min_exponent = INT_MAX;
+  for (std::size_t i = 0; i < nv; ++i) {
+    const Vec3& p = mesh.vertices[i];
+    dyadic[3 * i] = to_dyadic(p.x);
+    dyadic[3 * i + 1] = to_dyadic(p.y);
+    dyadic[3 * i + 2] = to_dyadic(p.z);
+    for (int k = 0; k < 3; ++k) {
+      if (dyadic[3 * i + k].mantissa != 0) {
+        min_exponent = std::min(min_exponent, dyadic[3 * i + k].exponent);
+      }
+    }
+  }
+  ExactVolumes result;
+  result.by_group_mm3.assign(num_groups, 0.0);
+  if (min_exponent == INT_MAX) return result;  // every coordinate is zero
+
+  std::vector<mpz_class> coord(3 * nv);
+  for (std::size_t i = 0; i < 3 * nv; ++i) {
+    const Dyadic& d = dyadic[i];
+    if (d.mantissa == 0) continue;
+    coord[i] = static_cast<long>(d.mantissa);
+    mpz_mul_2exp(coord[i].get_mpz_t(), coord[i].get_mpz_t(),
+                 static_cast<mp_bitcnt_t>(d.exponent - min_exponent));
+  }
+
+  std::vector<mpz_class> sums(num_groups);
+  mpz_class minor, det;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
+    const mpz_class* a = &coord[3 * static_cast<std::size_t>(t[0])];
+    const mpz_class* b = &coord[3 * static_cast<std::size_t>(t[1])];
+    const mpz_class* c = &coord[3 * static_cast<std::size_t>(t[2])];
+    // det = a · (b x c)
+    mpz_mul(minor.get_mpz_t(), b[1].get_mpz_t(), c[2].get_mpz_t());
+    mpz_submul(minor.get_mpz_t(), b[2].get_mpz_t(), c[1].get_mpz_t());
+    mpz_mul(det.get_mpz_t(), a[0].get_mpz_t(), minor.get_mpz_t());
+    mpz_mul(minor.get_mpz_t(), b[2].get_mpz_t(), c[0].get_mpz_t());
+    mpz_submul(minor.get_mpz_t(), b[0].get_mpz_t(), c[2].get_mpz_t());
+    mpz_addmul(det.get_mpz_t(), a[1].get_mpz_t(), minor.get_mpz_t());
+    mpz_mul(minor.get_mpz_t(), b[0].get_mpz_t(), c[1].get_mpz_t());
+    mpz_submul(minor.get_mpz_t(), b[1].get_mpz_t(), c[0].get_mpz_t());
+    mpz_addmul(det.get_mpz_t(), a[2].get_mpz_t(), minor.get_mpz_t());
+    sums[group_of_facet[f]] += det;
+  }
+  mpz_class total;
+  const int scale = 3 * min_exponent;
+  for (std::size_t g = 0; g < num_groups; ++g) {
+    total += sums[g];
+    result.by_group_mm3[g] = round_to_double(sums[g], scale);
+  }
+  result.total_mm3 = round_to_double(total, scale);
+  return result;
+}
+
+}  // namespace strata::diagnose::detail

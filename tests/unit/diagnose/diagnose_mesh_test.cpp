@@ -1,0 +1,454 @@
+#include "strata/diagnose/diagnose_mesh.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "strata/core/error.hpp"
+#include "strata/mesh/weld_vertices.hpp"
+
+namespace strata::diagnose {
+namespace {
+
+using Triangle = std::array<Vec3, 3>;
+
+Vec3 cross_of(const Triangle& t) {
+  const Vec3 u{t[1].x - t[0].x, t[1].y - t[0].y, t[1].z - t[0].z};
+  const Vec3 v{t[2].x - t[0].x, t[2].y - t[0].y, t[2].z - t[0].z};
+  return {u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x};
+}
+
+/// A soup whose stored normals follow the vertex order.
+TriangleSoup soup_of(const std::vector<Triangle>& triangles) {
+  TriangleSoup soup;
+  soup.triangles = triangles;
+  for (const Triangle& t : triangles) soup.stored_normals.push_back(cross_of(t));
+  soup.format = "stl-binary";
+  return soup;
+}
+
+/// The 12 outward-facing facets of the box [lo, hi].
+std::vector<Triangle> box(Vec3 lo, Vec3 hi) {
+  std::array<Vec3, 8> v;
+  for (int i = 0; i < 8; ++i) {
+    v[i] = {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
+  }
+  constexpr int kFacets[12][3] = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                                  {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  std::vector<Triangle> out;
+  for (const auto& f : kFacets) out.push_back({v[f[0]], v[f[1]], v[f[2]]});
+  return out;
+}
+
+std::vector<Triangle> unit_box() { return box({0, 0, 0}, {1, 1, 1}); }
+
+Triangle reversed(const Triangle& t) { return {t[0], t[2], t[1]}; }
+
+std::vector<Triangle> reversed(std::vector<Triangle> ts) {
+  for (Triangle& t : ts) t = reversed(t);
+  return ts;
+}
+
+std::vector<Triangle> joined(std::vector<Triangle> a, const std::vector<Triangle>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+MeshReport diagnose(const TriangleSoup& soup, const DiagnoseOptions& options = {}) {
+  return diagnose_mesh(weld_vertices(soup), soup, options);
+}
+
+MeshReport diagnose(const std::vector<Triangle>& triangles, const DiagnoseOptions& options = {}) {
+  return diagnose(soup_of(triangles), options);
+}
+
+TEST(DiagnoseMesh, ClosedBoxHasNoDefects) {
+  const MeshReport r = diagnose(unit_box());
+  EXPECT_EQ(r.num_facets, 12U);
+  EXPECT_EQ(r.num_input_facets, 12U);
+  EXPECT_EQ(r.num_vertices, 8U);
+  EXPECT_EQ(r.boundary_edges.count, 0U);
+  EXPECT_EQ(r.num_boundary_loops, 0U);
+  EXPECT_EQ(r.non_manifold_edges.count, 0U);
+  EXPECT_EQ(r.non_manifold_vertices.count, 0U);
+  EXPECT_EQ(r.inconsistent_edges.count, 0U);
+  EXPECT_EQ(r.unbalanced_edges.count, 0U);
+  EXPECT_EQ(r.degenerate_facets.count, 0U);
+  EXPECT_EQ(r.duplicate_facets.count, 0U);
+  EXPECT_EQ(r.near_vertices.count, 0U);
+  EXPECT_EQ(r.flipped_normals.count, 0U);
+  EXPECT_EQ(r.zero_normals.count, 0U);
+  EXPECT_EQ(r.self_intersections.count, 0U);
+  EXPECT_FALSE(r.self_intersections_truncated);
+  ASSERT_EQ(r.shells.size(), 1U);
+  EXPECT_TRUE(r.shells[0].is_closed);
+  EXPECT_TRUE(r.shells[0].is_balanced);
+  EXPECT_FALSE(r.shells[0].is_inverted);
+  EXPECT_EQ(r.verdict, Verdict::Printable);
+}
+
+TEST(DiagnoseMesh, BoxVolumeAndAreaAreExact) {
+  const MeshReport r = diagnose(box({-1.5, 0.25, 2.0}, {2.5, 3.75, 10.0}));  // 4 x 3.5 x 8
+  EXPECT_EQ(r.volume_mm3, 112.0);
+  EXPECT_EQ(r.shells[0].signed_volume_mm3, 112.0);
+  EXPECT_DOUBLE_EQ(r.surface_area_mm2, 2.0 * (4.0 * 3.5 + 3.5 * 8.0 + 8.0 * 4.0));
+  EXPECT_EQ(r.bounds.min, (Vec3{-1.5, 0.25, 2.0}));
+  EXPECT_EQ(r.bounds.max, (Vec3{2.5, 3.75, 10.0}));
+}
+
+TEST(DiagnoseMesh, VolumeFarFromOriginIsExact) {
+  // Far from the origin the tetrahedra cancel to 1e-24 of their size: a double sum loses the
+  // volume, the exact sum keeps it.
+  const double far = 1e8;
+  const MeshReport r = diagnose(box({far, far, far}, {far + 0.5, far + 0.25, far + 2.0}));
+  EXPECT_EQ(r.volume_mm3, 0.25);
+}
+
+TEST(DiagnoseMesh, BoxWithoutOneFacetHasThreeBoundaryEdgesInOneLoop) {
+  auto facets = unit_box();
+  facets.erase(facets.begin() + 4);
+  const MeshReport r = diagnose(facets);
+  EXPECT_EQ(r.boundary_edges.count, 3U);
+  EXPECT_EQ(r.boundary_edges.locations.size(), 3U);
+  EXPECT_EQ(r.num_boundary_loops, 1U);
+  EXPECT_EQ(r.unbalanced_edges.count, 3U);
+  ASSERT_EQ(r.shells.size(), 1U);
+  EXPECT_FALSE(r.shells[0].is_closed);
+  EXPECT_EQ(r.num_closed_shells, 0U);
+  EXPECT_EQ(r.verdict, Verdict::NeedsRepair);
+  EXPECT_NE(r.verdict_reason.find("3 open edges in 1 loop"), std::string::npos) << r.verdict_reason;
+}
+
+TEST(DiagnoseMesh, BoundaryEdgeLocationFollowsTheFacet) {
+  const MeshReport r =
+      diagnose(std::vector<Triangle>{{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}});
+  ASSERT_EQ(r.boundary_edges.count, 3U);
+  ASSERT_EQ(r.num_boundary_loops, 1U);
+  // Every kept boundary edge runs in the facet's direction.
+  for (const EdgeLocation& e : r.boundary_edges.locations) {
+    const bool known = (e.from == Vec3{0, 0, 0} && e.to == Vec3{1, 0, 0}) ||
+                       (e.from == Vec3{1, 0, 0} && e.to == Vec3{0, 1, 0}) ||
+                       (e.from == Vec3{0, 1, 0} && e.to == Vec3{0, 0, 0});
+    EXPECT_TRUE(known);
+  }
+}
+
+TEST(DiagnoseMesh, TwoHolesMakeTwoLoops) {
+  auto facets = unit_box();
+  facets.erase(facets.begin() + 2);  // top
+  facets.erase(facets.begin());      // bottom
+  const MeshReport r = diagnose(facets);
+  EXPECT_EQ(r.boundary_edges.count, 6U);
+  EXPECT_EQ(r.num_boundary_loops, 2U);
+}
+
+TEST(DiagnoseMesh, BoxesSharingAnEdgeHaveOneNonManifoldEdge) {
+  const MeshReport r = diagnose(joined(unit_box(), box({1, 1, 0}, {2, 2, 1})));
+  EXPECT_EQ(r.non_manifold_edges.count, 1U);
+  ASSERT_EQ(r.non_manifold_edges.locations.size(), 1U);
+  const EdgeLocation& e = r.non_manifold_edges.locations[0];
+  EXPECT_EQ(e.from.x, 1.0);
+  EXPECT_EQ(e.from.y, 1.0);
+  EXPECT_EQ(e.to.x, 1.0);
+  EXPECT_EQ(e.to.y, 1.0);
+  EXPECT_EQ(r.boundary_edges.count, 0U);
+  EXPECT_EQ(r.unbalanced_edges.count, 0U);
+  EXPECT_EQ(r.self_intersections.count, 0U);
+  EXPECT_EQ(r.shells.size(), 1U);  // joined through the shared edge
+  EXPECT_EQ(r.verdict, Verdict::PrintableUnderRule);
+}
+
+TEST(DiagnoseMesh, BoxesSharingAVertexHaveOneNonManifoldVertex) {
+  const MeshReport r = diagnose(joined(unit_box(), box({1, 1, 1}, {2, 2, 2})));
+  EXPECT_EQ(r.non_manifold_edges.count, 0U);
+  ASSERT_EQ(r.non_manifold_vertices.count, 1U);
+  EXPECT_EQ(r.non_manifold_vertices.locations[0], (Vec3{1, 1, 1}));
+  EXPECT_EQ(r.shells.size(), 2U);  // a vertex does not join shells
+  EXPECT_EQ(r.self_intersections.count, 0U);
+  EXPECT_EQ(r.verdict, Verdict::PrintableUnderRule);
+}
+
+TEST(DiagnoseMesh, DuplicatedFacetIsCountedOnce) {
+  auto facets = unit_box();
+  facets.push_back(facets[3]);
+  const MeshReport r = diagnose(facets);
+  EXPECT_EQ(r.duplicate_facets.count, 1U);
+  ASSERT_EQ(r.duplicate_facets.locations.size(), 1U);
+  EXPECT_EQ(r.duplicate_facets.locations[0], 12U);  // the extra copy
+  EXPECT_EQ(r.non_manifold_edges.count, 3U);
+  EXPECT_EQ(r.self_intersections.count, 0U);  // duplicates are not self-intersections
+}
+
+TEST(DiagnoseMesh, DuplicatedFacetInSameOrientationNeedsRepair) {
+  // Its three edges are run twice one way and once the other: the winding number jumps by two
+  // across the facet and the nonzero rule would fill outside the box.
+  auto facets = unit_box();
+  facets.push_back(facets[3]);
+  const MeshReport r = diagnose(facets);
+  EXPECT_EQ(r.unbalanced_edges.count, 3U);
+  EXPECT_EQ(r.verdict, Verdict::NeedsRepair);
+}
+
+TEST(DiagnoseMesh, DuplicatedFacetInReverseOrientationNeedsRepair) {
+  // The reversed copy cancels the original: together they leave a hole in the box.
+  auto facets = unit_box();
+  facets.push_back(reversed(facets[3]));
+  const MeshReport r = diagnose(facets);
+  EXPECT_EQ(r.duplicate_facets.count, 1U);
+  EXPECT_EQ(r.unbalanced_edges.count, 3U);
+  EXPECT_EQ(r.verdict, Verdict::NeedsRepair);
+}
+
+TEST(DiagnoseMesh, ExtraFacetTogetherWithItsReverseIsBalanced) {
+  auto facets = unit_box();
+  facets.push_back(facets[3]);
+  facets.push_back(reversed(facets[3]));
+  const MeshReport r = diagnose(facets);
+  EXPECT_EQ(r.duplicate_facets.count, 2U);
+  EXPECT_EQ(r.unbalanced_edges.count, 0U);
+  EXPECT_EQ(r.verdict, Verdict::PrintableUnderRule);
+}
+
+TEST(DiagnoseMesh, DuplicatedShellIsPrintableUnderRule) {
+  const MeshReport r = diagnose(joined(unit_box(), unit_box()));
+  EXPECT_EQ(r.duplicate_facets.count, 12U);
+  EXPECT_EQ(r.non_manifold_edges.count, 18U);
+  EXPECT_EQ(r.unbalanced_edges.count, 0U);
+  EXPECT_EQ(r.volume_mm3, 2.0);
+  EXPECT_EQ(r.verdict, Verdict::PrintableUnderRule);
+  EXPECT_NE(r.verdict_reason.find("12 duplicate facets"), std::string::npos) << r.verdict_reason;
+}
+
+/// A unit box whose side facet (0,0,0)-(1,0,0)-(1,0,1) is split at m = (0.5, 0, 0), and the
+/// T-junction at m closed by the zero-area facet ((0,0,0), (1,0,0), m), facet 13.
+std::vector<Triangle> box_with_sealed_t_junction() {
+  const Vec3 o{0, 0, 0}, x{1, 0, 0}, m{0.5, 0, 0}, top{1, 0, 1};
+  auto facets = unit_box();
+  facets.erase(facets.begin() + 4);  // (o, x, top)
+  facets.push_back({o, m, top});
+  facets.push_back({m, x, top});
+  facets.push_back({o, x, m});
+  return facets;
+}
+
+TEST(DiagnoseMesh, CollinearFacetIsDegenerate) {
+  const MeshReport r = diagnose(box_with_sealed_t_junction());
+  EXPECT_EQ(r.degenerate_facets.count, 1U);
+  ASSERT_EQ(r.degenerate_facets.locations.size(), 1U);
+  EXPECT_EQ(r.degenerate_facets.locations[0], 13U);
+  EXPECT_EQ(r.volume_mm3, 1.0);
+  EXPECT_EQ(r.surface_area_mm2, 6.0);
+}
+
+TEST(DiagnoseMesh, EdgesOfZeroAreaFacetsAreNotPartOfTheTopology) {
+  // Without the zero-area facet the split side leaves the crack o-m-x against the bottom's o-x.
+  const MeshReport r = diagnose(box_with_sealed_t_junction());
+  EXPECT_EQ(r.boundary_edges.count, 3U);
+  EXPECT_EQ(r.num_boundary_loops, 1U);
+  ASSERT_EQ(r.shells.size(), 1U);
+  EXPECT_EQ(r.shells[0].num_facets, 13U);
+  EXPECT_FALSE(r.shells[0].is_closed);
+}
+
+TEST(DiagnoseMesh, ZeroAreaFacetSealingACrackKeepsTheMeshBalanced) {
+  const MeshReport r = diagnose(box_with_sealed_t_junction());
+  EXPECT_EQ(r.unbalanced_edges.count, 0U);
+  EXPECT_EQ(r.verdict, Verdict::PrintableUnderRule);
+  EXPECT_NE(r.verdict_reason.find("sealed by zero-area facets"), std::string::npos)
+      << r.verdict_reason;
+}
+
+TEST(DiagnoseMesh, CrackWithoutSealNeedsRepair) {
+  auto facets = box_with_sealed_t_junction();
+  facets.pop_back();
+  const MeshReport r = diagnose(facets);
+  EXPECT_EQ(r.boundary_edges.count, 3U);
+  EXPECT_EQ(r.unbalanced_edges.count, 3U);
+  EXPECT_EQ(r.verdict, Verdict::NeedsRepair);
+}
+
+TEST(DiagnoseMesh, FacetWithTwoEqualVerticesIsDegenerate) {
+  auto facets = unit_box();
+  facets.push_back({Vec3{0, 0, 0}, Vec3{0, 0, 0}, Vec3{1, 0, 0}});
+  const MeshReport r = diagnose(facets);
+  EXPECT_EQ(r.degenerate_facets.count, 1U);
+  EXPECT_EQ(r.surface_area_mm2, 6.0);
+}
+
+TEST(DiagnoseMesh, NearlyCollinearFacetIsNotDegenerate) {
+  auto facets = unit_box();
+  facets.push_back({Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0.5, 1e-300, 0}});
+  const MeshReport r = diagnose(facets);
+  EXPECT_EQ(r.degenerate_facets.count, 0U);
+}
+
+TEST(DiagnoseMesh, OneFlippedFacetGivesThreeInconsistentEdges) {
+  auto facets = unit_box();
+  facets[5] = reversed(facets[5]);
+  const MeshReport r = diagnose(facets);
+  EXPECT_EQ(r.inconsistent_edges.count, 3U);
+  EXPECT_EQ(r.boundary_edges.count, 0U);
+  ASSERT_EQ(r.shells.size(), 1U);
+  EXPECT_TRUE(r.shells[0].is_closed);
+  EXPECT_FALSE(r.shells[0].is_balanced);
+  EXPECT_EQ(r.verdict, Verdict::NeedsRepair);
+  EXPECT_NE(r.verdict_reason.find("3 inconsistently oriented edges"), std::string::npos)
+      << r.verdict_reason;
+}
+
+TEST(DiagnoseMesh, InvertedBoxIsAnInvertedShell) {
+  const MeshReport r = diagnose(reversed(unit_box()));
+  EXPECT_EQ(r.volume_mm3, -1.0);
+  ASSERT_EQ(r.shells.size(), 1U);
+  EXPECT_TRUE(r.shells[0].is_inverted);
+  EXPECT_EQ(r.inverted_shells.count, 1U);
+  EXPECT_EQ(r.inconsistent_edges.count, 0U);
+  EXPECT_EQ(r.verdict, Verdict::PrintableUnderRule);
+}
+
+TEST(DiagnoseMesh, InnerWallOfHollowBoxIsACavityNotInverted) {
+  const MeshReport r =
+      diagnose(joined(box({0, 0, 0}, {4, 4, 4}), reversed(box({1, 1, 1}, {3, 3, 3}))));
+  ASSERT_EQ(r.shells.size(), 2U);
+  EXPECT_TRUE(r.shells[1].is_cavity);
+  EXPECT_FALSE(r.shells[1].is_inverted);
+  EXPECT_EQ(r.inverted_shells.count, 0U);
+  EXPECT_EQ(r.volume_mm3, 64.0 - 8.0);
+  EXPECT_EQ(r.verdict, Verdict::Printable);
+}
+
+TEST(DiagnoseMesh, OverlappingBoxesSelfIntersect) {
+  const MeshReport r = diagnose(joined(unit_box(), box({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5})));
+  EXPECT_GT(r.self_intersections.count, 0U);
+  EXPECT_FALSE(r.self_intersections_truncated);
+  for (const FacetPair& p : r.self_intersections.locations) {
+    EXPECT_LT(p.first, 12U);  // every pair has one facet of each box
+    EXPECT_GE(p.second, 12U);
+  }
+  EXPECT_EQ(r.shells.size(), 2U);
+  EXPECT_EQ(r.num_closed_shells, 2U);
+  EXPECT_EQ(r.verdict, Verdict::PrintableUnderRule);
+}
+
+TEST(DiagnoseMesh, SelfIntersectionSearchStopsAtItsLimit) {
+  const MeshReport r = diagnose(joined(unit_box(), box({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5})),
+                                DiagnoseOptions{.max_self_intersection_pairs = 2});
+  EXPECT_EQ(r.self_intersections.count, 2U);
+  EXPECT_TRUE(r.self_intersections_truncated);
+}
+
+TEST(DiagnoseMesh, SelfIntersectionSearchCanBeSwitchedOff) {
+  const MeshReport r = diagnose(joined(unit_box(), box({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5})),
+                                DiagnoseOptions{.check_self_intersections = false});
+  EXPECT_FALSE(r.self_intersections_checked);
+  EXPECT_EQ(r.self_intersections.count, 0U);
+}
+
+TEST(DiagnoseMesh, FacetsFoldedOntoEachOtherAcrossAnEdgeIntersect) {
+  const Vec3 a{0, 0, 0}, b{2, 0, 0}, c{1, 1, 0}, d{1, 2, 0};
+  const MeshReport r = diagnose(std::vector<Triangle>{{a, b, c}, {b, a, d}});
+  EXPECT_EQ(r.self_intersections.count, 1U);
+}
+
+TEST(DiagnoseMesh, FacetsMeetingAlongAnEdgeDoNotIntersect) {
+  const Vec3 a{0, 0, 0}, b{2, 0, 0}, c{1, 1, 0}, d{1, -1, 0};
+  const MeshReport r = diagnose(std::vector<Triangle>{{a, b, c}, {b, a, d}});
+  EXPECT_EQ(r.self_intersections.count, 0U);
+}
+
+TEST(DiagnoseMesh, FacetsSharingAVertexAndCrossingIntersect) {
+  const Vec3 o{0, 0, 0};
+  const MeshReport r = diagnose(std::vector<Triangle>{{o, Vec3{2, -1, 0}, Vec3{2, 1, 0}},
+                                                      {o, Vec3{1, 0, -1}, Vec3{1, 0, 1}}});
+  EXPECT_EQ(r.self_intersections.count, 1U);
+}
+
+TEST(DiagnoseMesh, FacetsTouchingOnlyAtASharedVertexDoNotIntersect) {
+  const Vec3 o{0, 0, 0};
+  const MeshReport r = diagnose(std::vector<Triangle>{{o, Vec3{2, -1, 0}, Vec3{2, 1, 0}},
+                                                      {o, Vec3{-1, 0, -1}, Vec3{-1, 0, 1}}});
+  EXPECT_EQ(r.self_intersections.count, 0U);
+}
+
+TEST(DiagnoseMesh, ReversedStoredNormalIsFlipped) {
+  TriangleSoup soup = soup_of(unit_box());
+  soup.stored_normals[7] = {-soup.stored_normals[7].x, -soup.stored_normals[7].y,
+                            -soup.stored_normals[7].z};
+  const MeshReport r = diagnose(soup);
+  EXPECT_TRUE(r.normals_checked);
+  EXPECT_EQ(r.flipped_normals.count, 1U);
+  ASSERT_EQ(r.flipped_normals.locations.size(), 1U);
+  EXPECT_EQ(r.flipped_normals.locations[0], 7U);
+  EXPECT_EQ(r.verdict, Verdict::Printable);  // slicing never looks at stored normals
+}
+
+TEST(DiagnoseMesh, ZeroAndNonFiniteStoredNormalsAreCountedApart) {
+  TriangleSoup soup = soup_of(unit_box());
+  soup.stored_normals[2] = {0.0, -0.0, 0.0};
+  soup.stored_normals[4] = {std::numeric_limits<double>::quiet_NaN(), 0.0, 1.0};
+  const MeshReport r = diagnose(soup);
+  EXPECT_EQ(r.zero_normals.count, 1U);
+  EXPECT_EQ(r.non_finite_normals.count, 1U);
+  EXPECT_EQ(r.flipped_normals.count, 0U);
+}
+
+TEST(DiagnoseMesh, SoupWithoutNormalsSkipsTheNormalCheck) {
+  TriangleSoup soup = soup_of(unit_box());
+  soup.stored_normals.clear();
+  const MeshReport r = diagnose(soup);
+  EXPECT_FALSE(r.normals_checked);
+}
+
+TEST(DiagnoseMesh, NearCoincidentVerticesAreReportedNotMerged) {
+  auto facets = unit_box();
+  facets[0][0] = {1e-9, 0, 0};  // instead of (0, 0, 0)
+  const MeshReport r = diagnose(facets);
+  EXPECT_EQ(r.num_vertices, 9U);
+  ASSERT_EQ(r.near_vertices.count, 1U);
+  const PointPair& p = r.near_vertices.locations[0];
+  EXPECT_TRUE((p.first == Vec3{0, 0, 0} && p.second == Vec3{1e-9, 0, 0}) ||
+              (p.second == Vec3{0, 0, 0} && p.first == Vec3{1e-9, 0, 0}));
+  EXPECT_GT(r.boundary_edges.count, 0U);
+}
+
+TEST(DiagnoseMesh, NearVertexToleranceIsAnOption) {
+  auto facets = unit_box();
+  facets[0][0] = {1e-3, 0, 0};
+  EXPECT_EQ(diagnose(facets).near_vertices.count, 0U);
+  EXPECT_EQ(diagnose(facets, DiagnoseOptions{.near_vertex_mm = 0.01}).near_vertices.count, 1U);
+}
+
+TEST(DiagnoseMesh, KeepsOnlyTheFirstLocations) {
+  std::vector<Triangle> facets;
+  for (int i = 0; i < 30; ++i) {
+    const double x = 10.0 * i;
+    facets.push_back({Vec3{x, 0, 0}, Vec3{x + 1, 0, 0}, Vec3{x, 1, 0}});
+  }
+  const MeshReport r = diagnose(facets);
+  EXPECT_EQ(r.boundary_edges.count, 90U);
+  EXPECT_EQ(r.num_boundary_loops, 30U);
+  EXPECT_EQ(r.shells.size(), 30U);
+  ASSERT_EQ(r.boundary_edges.locations.size(), kMaxLocations);
+  EXPECT_EQ(r.boundary_edges.locations.front().from.x, 0.0);  // from facet 0
+  EXPECT_LE(r.boundary_edges.locations.back().from.x, 70.0);  // from facets 0..6
+}
+
+TEST(DiagnoseMesh, EmptyMeshNeedsRepair) {
+  const MeshReport r = diagnose(std::vector<Triangle>{});
+  EXPECT_EQ(r.num_facets, 0U);
+  EXPECT_TRUE(r.bounds.empty());
+  EXPECT_EQ(r.verdict, Verdict::NeedsRepair);
+}
+
+TEST(DiagnoseMesh, RejectsOutOfRangeVertexIndex) {
+  IndexedMesh mesh;
+  mesh.vertices = {{0, 0, 0}, {1, 0, 0}};
+  mesh.triangles = {{0, 1, 2}};
+  EXPECT_THROW((void)diagnose_mesh(mesh, TriangleSoup{}), InternalError);
+}
+
+}  // namespace
+}  // namespace strata::diagnose

@@ -1,0 +1,87 @@
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "diagnose/exact_geometry_internal.hpp"
+
+namespace strata::diagnose::detail {
+namespace {
+
+TEST(IsCollinear, AcceptsPointsOnOneLine) {
+  EXPECT_TRUE(is_collinear({0, 0, 0}, {0.1, 0.3, 0.7}, {0.2, 0.6, 1.4}));
+  EXPECT_TRUE(is_collinear({1, 2, 3}, {1, 2, 3}, {5, 5, 5}));
+}
+
+TEST(IsCollinear, RejectsPointOffTheLineByOneTinyStep) {
+  EXPECT_FALSE(is_collinear({0, 0, 0}, {1, 0, 0}, {0.5, 1e-300, 0}));
+}
+
+TEST(NormalAgreementSign, FollowsTheRightHandRule) {
+  EXPECT_EQ(normal_agreement_sign({0, 0, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}), 1);
+  EXPECT_EQ(normal_agreement_sign({0, 0, -1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}), -1);
+  EXPECT_EQ(normal_agreement_sign({1, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}), 0);
+}
+
+TEST(NormalAgreementSign, SurvivesCancellationThatFoolsDouble) {
+  // From stl-models/misc/multiWordName.bin.stl: the cross product's y component is the
+  // difference of two products of about 6e57 that a double evaluation cancels to zero; the
+  // exact dot product is -1.4e29, the double one +8e-14.
+  const Vec3 n{0.0, -0x1.dep+0, 0x1.fde8p-136};
+  const Vec3 a{-0x1p+95, 0x1.7b7ep-134, -0x1.7b7fdep+96};
+  const Vec3 b{0x1.7b7ep-134, -0x1.7fdep-4, 0.0};
+  const Vec3 c{0.0, 0.0, -0x1.dep+0};
+  EXPECT_EQ(normal_agreement_sign(n, a, b, c), -1);
+}
+
+IndexedMesh unit_box_at(double x0, double y0, double z0, double size) {
+  IndexedMesh mesh;
+  for (int i = 0; i < 8; ++i) {
+    mesh.vertices.push_back(
+        {x0 + ((i & 1) ? size : 0.0), y0 + ((i & 2) ? size : 0.0), z0 + ((i & 4) ? size : 0.0)});
+  }
+  mesh.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                    {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  return mesh;
+}
+
+TEST(ExactSignedVolumes, SumsEachGroup) {
+  IndexedMesh mesh = unit_box_at(0, 0, 0, 1);
+  const IndexedMesh big = unit_box_at(5, 5, 5, 2);
+  for (const auto& t : big.triangles) {
+    mesh.triangles.push_back({t[0] + 8, t[1] + 8, t[2] + 8});
+  }
+  mesh.vertices.insert(mesh.vertices.end(), big.vertices.begin(), big.vertices.end());
+  std::vector<std::uint32_t> group(24, 0);
+  for (int f = 12; f < 24; ++f) group[f] = 1;
+  const ExactVolumes v = exact_signed_volumes(mesh, group, 2);
+  ASSERT_EQ(v.by_group_mm3.size(), 2U);
+  EXPECT_EQ(v.by_group_mm3[0], 1.0);
+  EXPECT_EQ(v.by_group_mm3[1], 8.0);
+  EXPECT_EQ(v.total_mm3, 9.0);
+}
+
+TEST(ExactSignedVolumes, StaysExactFarFromTheOrigin) {
+  // The tetrahedra are of order 1e45 and cancel to 1.
+  const IndexedMesh mesh = unit_box_at(1e15, -1e15, 3e15, 1);
+  const ExactVolumes v = exact_signed_volumes(mesh, std::vector<std::uint32_t>(12, 0), 1);
+  EXPECT_EQ(v.total_mm3, 1.0);
+}
+
+TEST(ExactSignedVolumes, MixesTinyAndHugeCoordinates) {
+  const IndexedMesh mesh = unit_box_at(-0x1p-60, 0x1p+20, 0.0, 0x1p-30);
+  const ExactVolumes v = exact_signed_volumes(mesh, std::vector<std::uint32_t>(12, 0), 1);
+  EXPECT_EQ(v.total_mm3, 0x1p-90);
+}
+
+TEST(ExactSignedVolumes, RoundsOnceToNearest) {
+  // One facet against the origin: (1/3 of a unit cube's corner) 1/6 exactly, rounded once.
+  IndexedMesh mesh;
+  mesh.vertices = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  mesh.triangles = {{0, 1, 2}};
+  const ExactVolumes v = exact_signed_volumes(mesh, {0}, 1);
+  EXPECT_EQ(v.total_mm3, 1.0 / 6.0);
+}
+
+}  // namespace
+}  // namespace strata::diagnose::detail
