@@ -1,0 +1,179 @@
+#include "strata/io/read_mesh.hpp"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <string_view>
+#include <system_error>
+
+#include "io/read_mesh_internal.hpp"
+#include "io/stl_format_internal.hpp"
+
+namespace strata::io {
+namespace {
+
+Error bad_input(std::string_view name, std::string message) {
+  return Error{ErrorCode::BadInput, std::move(message), std::string(name)};
+}
+
+std::string lower_ascii(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) {
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  }
+  return out;
+}
+
+bool ends_with(std::string_view text, std::string_view suffix) {
+  return text.size() >= suffix.size() && text.substr(text.size() - suffix.size()) == suffix;
+}
+
+/// The lower-case extension of a name, with its dot (".stl"), or "" when it has none.
+std::string extension_of(std::string_view name) {
+  const std::size_t slash = name.find_last_of("/\\");
+  const std::string_view file = slash == std::string_view::npos ? name : name.substr(slash + 1);
+  const std::size_t dot = file.rfind('.');
+  if (dot == std::string_view::npos || dot == 0) return {};
+  return lower_ascii(file.substr(dot));
+}
+
+bool starts_with_ply_magic(std::string_view bytes) {
+  return bytes.size() >= 4 && bytes.substr(0, 3) == "ply" && (bytes[3] == '\n' || bytes[3] == '\r');
+}
+
+/// First token of the text, skipping `#` comment lines: an OFF keyword is [ST][C][N][4][n]OFF.
+bool looks_like_off(std::string_view bytes) {
+  std::size_t i = 0;
+  for (;;) {
+    while (i < bytes.size() &&
+           (bytes[i] == ' ' || bytes[i] == '\t' || bytes[i] == '\n' || bytes[i] == '\r')) {
+      ++i;
+    }
+    if (i < bytes.size() && bytes[i] == '#') {
+      while (i < bytes.size() && bytes[i] != '\n' && bytes[i] != '\r') ++i;
+      continue;
+    }
+    break;
+  }
+  std::size_t j = i;
+  while (j < bytes.size() && j - i < 8 && bytes[j] > ' ') ++j;
+  const std::string_view word = bytes.substr(i, j - i);
+  return ends_with(word, "OFF") && (j == bytes.size() || bytes[j] <= ' ');
+}
+
+/// An OBJ file is text whose statements start with `v`, `f`, `#`, `o`, `g` ...: accept it when
+/// one of its first lines is a `v ` statement.
+bool looks_like_obj(std::string_view bytes) {
+  std::size_t line_start = 0;
+  for (int line = 0; line < 64 && line_start < bytes.size(); ++line) {
+    const std::string_view rest = bytes.substr(line_start);
+    if (rest.size() >= 2 && rest[0] == 'v' && (rest[1] == ' ' || rest[1] == '\t')) return true;
+    const std::size_t eol = rest.find('\n');
+    if (eol == std::string_view::npos) break;
+    line_start += eol + 1;
+  }
+  return false;
+}
+
+Result<TriangleSoup> unsupported(std::string_view name, std::string_view what) {
+  return bad_input(name, fmt::format("unsupported format: {}; strata reads STL (binary or ASCII), "
+                                     "OBJ, OFF and PLY, optionally gzip-compressed",
+                                     what));
+}
+
+/// Dispatch on uncompressed bytes; `inner_name` is the name without `.gz`.
+Result<TriangleSoup> read_uncompressed(std::string_view bytes, std::string_view name,
+                                       std::string_view inner_name, const ReadLimits& limits) {
+  if (bytes.empty()) return bad_input(name, "empty file (0 bytes)");
+  const std::string ext = extension_of(inner_name);
+
+  if (bytes.substr(0, 4) == std::string_view("PK\x03\x04", 4)) {
+    return unsupported(name, ext == ".3mf" ? "3MF (a zip archive)" : "zip archive");
+  }
+  if (ext == ".3mf" || ext == ".amf" || ext == ".zip" || ext == ".ctm" || ext == ".step" ||
+      ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".fbx" || ext == ".dae" ||
+      ext == ".gltf" || ext == ".glb" || ext == ".3ds" || ext == ".x3d" || ext == ".wrl") {
+    return unsupported(name, fmt::format("'{}' files", ext));
+  }
+  if (starts_with_ply_magic(bytes)) return detail::read_ply_bytes(bytes, name, limits);
+
+  const detail::StlBinaryLayout layout = detail::stl_binary_layout(bytes);
+  if (layout.fit == detail::StlBinaryFit::Exact ||
+      layout.fit == detail::StlBinaryFit::TrailingBytes || detail::starts_with_solid(bytes) ||
+      ext == ".stl") {
+    return read_stl_bytes(bytes, name, limits);
+  }
+  if (ext == ".obj") return detail::read_obj_bytes(bytes, name, limits);
+  if (ext == ".off") return detail::read_off_bytes(bytes, name, limits);
+  if (ext == ".ply") return detail::read_ply_bytes(bytes, name, limits);
+  if (looks_like_off(bytes)) return detail::read_off_bytes(bytes, name, limits);
+  if (looks_like_obj(bytes)) return detail::read_obj_bytes(bytes, name, limits);
+  if (bytes.substr(0, 5) == "<?xml" || bytes.substr(0, 4) == "<amf") {
+    return unsupported(name, "XML (AMF?)");
+  }
+  return unsupported(name, ext.empty()
+                               ? std::string("content is not STL, OBJ, OFF or PLY")
+                               : fmt::format("'{}' content is not STL, OBJ, OFF or PLY", ext));
+}
+
+}  // namespace
+
+Result<TriangleSoup> read_mesh_bytes(std::string_view bytes, std::string_view name,
+                                     const ReadLimits& limits) {
+  if (!detail::is_gzip(bytes)) return read_uncompressed(bytes, name, name, limits);
+
+  const std::string lower = lower_ascii(name);
+  std::string_view inner_name = name;
+  if (ends_with(lower, ".gz")) inner_name.remove_suffix(3);
+  if (ends_with(lower, ".tgz")) return unsupported(name, "tar archive");
+
+  Result<std::string> inflated =
+      detail::decompress_gzip(bytes, name, limits.max_decompressed_bytes);
+  if (!inflated) return inflated.error();
+  if (detail::is_gzip(*inflated)) {
+    return unsupported(name, "gzip inside gzip");
+  }
+  Result<TriangleSoup> soup = read_uncompressed(*inflated, name, inner_name, limits);
+  if (!soup) {
+    if (inflated->empty()) return bad_input(name, "empty file (gzip of 0 bytes)");
+    return soup;
+  }
+  soup->format += "+gz";
+  return soup;
+}
+
+Result<TriangleSoup> read_mesh(const std::filesystem::path& path, const ReadLimits& limits) {
+  const std::string name = path.string();
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) {
+    return bad_input(name, "cannot open: no such file");
+  }
+  if (std::filesystem::is_directory(status)) {
+    return bad_input(name, "cannot read: it is a directory, not a file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return bad_input(name, fmt::format("cannot open: {}", std::strerror(errno)));
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  in.seekg(0, std::ios::beg);
+  std::string bytes;
+  if (size > 0) {
+    bytes.resize(static_cast<std::size_t>(size));
+    if (!in.read(bytes.data(), size)) {
+      return bad_input(name, fmt::format("cannot read: {}", std::strerror(errno)));
+    }
+  } else if (size < 0) {
+    // Not seekable (a pipe, /dev/stdin): read it as a stream.
+    in.clear();
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  if (bytes.empty()) return bad_input(name, "empty file (0 bytes)");
+  return read_mesh_bytes(bytes, name, limits);
+}
+
+}  // namespace strata::io

@@ -1,0 +1,257 @@
+// Wavefront OBJ reader, hand-written rather than CGAL::IO::read_OBJ because CGAL 5.5's reader is
+// weak on inputs we must handle:
+//  - it rejects backslash line continuations (trimesh/models/wallhole.obj in the corpus) and any
+//    statement outside its list (`l` polylines, for example), failing the whole file;
+//  - after each corner it skips to the next space, so tab-separated corners are lost silently;
+//  - it maps the invalid index 0 to "the next vertex", a silently wrong face when vertices follow;
+//  - it cannot say on which line a file is bad.
+// Only geometry is read: `v` (x y z, optional w or colour ignored) and `f` (v, v/vt, v//vn,
+// v/vt/vn corners; negative indices count back from the last vertex). Everything else is skipped.
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+#include <system_error>
+
+#include "io/read_mesh_internal.hpp"
+
+namespace strata::io::detail {
+namespace {
+
+constexpr bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+
+std::string_view next_token(std::string_view& rest) {
+  std::size_t i = 0;
+  while (i < rest.size() && is_blank(rest[i])) ++i;
+  std::size_t j = i;
+  while (j < rest.size() && !is_blank(rest[j])) ++j;
+  const std::string_view token = rest.substr(i, j - i);
+  rest.remove_prefix(j);
+  return token;
+}
+
+std::string quote(std::string_view text) {
+  constexpr std::size_t kMaxChars = 40;
+  std::string out = "'";
+  for (std::size_t i = 0; i < text.size() && i < kMaxChars; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c < 0x20 || c == 0x7f) {
+      out += fmt::format("\\x{:02x}", c);
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  if (text.size() > kMaxChars) out += "...";
+  return out + "'";
+}
+
+/// Parses a whole token as a double (read as double, not rounded: SPEC §2).
+bool parse_double(std::string_view token, double& out) {
+  const char* begin = token.data();
+  const char* end = begin + token.size();
+  if (begin != end && *begin == '+') {
+    ++begin;
+    if (begin == end || *begin == '-' || *begin == '+') return false;
+  }
+  if (begin == end) return false;
+  const auto [ptr, ec] = std::from_chars(begin, end, out, std::chars_format::general);
+  if (ptr != end) return false;
+  if (ec == std::errc::result_out_of_range) {
+    const std::string copy(begin, end);
+    out = std::strtod(copy.c_str(), nullptr);
+    return true;  // overflow gives infinity, which the caller rejects as non-finite
+  }
+  return ec == std::errc();
+}
+
+class ObjReader {
+ public:
+  ObjReader(std::string_view text, std::string_view name, const ReadLimits& limits)
+      : text_(text), name_(name), limits_(limits) {}
+
+  Result<PolygonSoup> read();
+  Diagnostics take_diagnostics() {
+    Diagnostics out;
+    tally_.flush_into(out);
+    return out;
+  }
+
+ private:
+  /// The next logical line (continuations joined into `joined_`); false at the end.
+  bool next_line(std::string_view& line);
+  bool next_physical_line(std::string_view& line);
+  Error error_here(std::string message) const {
+    return Error{ErrorCode::BadInput, std::move(message),
+                 fmt::format("{}:{}", name_, statement_line_)};
+  }
+  Result<void> read_vertex(std::string_view rest);
+  Result<void> read_face(std::string_view rest);
+
+  std::string_view text_;
+  std::string_view name_;
+  const ReadLimits& limits_;
+  std::size_t pos_ = 0;
+  std::size_t line_number_ = 0;
+  std::size_t statement_line_ = 0;
+  bool line_too_long_ = false;
+  std::string joined_;
+  PolygonSoup soup_;
+  DiagnosticTally tally_{"line"};
+};
+
+bool ObjReader::next_physical_line(std::string_view& line) {
+  const std::size_t size = text_.size();
+  if (pos_ >= size) return false;
+  ++line_number_;
+  const char* begin = text_.data() + pos_;
+  const std::size_t available = size - pos_;
+  const std::size_t window = std::min(available, limits_.max_line_bytes + 1);
+  const char* end_of_window = begin + window;
+  const char* eol = begin;
+  while (eol < end_of_window && *eol != '\n' && *eol != '\r') ++eol;
+  if (eol == end_of_window && available > limits_.max_line_bytes) {
+    line_too_long_ = true;
+    return false;
+  }
+  line = std::string_view(begin, static_cast<std::size_t>(eol - begin));
+  pos_ += line.size();
+  if (pos_ < size) {
+    const bool crlf = text_[pos_] == '\r' && pos_ + 1 < size && text_[pos_ + 1] == '\n';
+    pos_ += crlf ? 2 : 1;
+  }
+  return true;
+}
+
+bool ObjReader::next_line(std::string_view& line) {
+  if (!next_physical_line(line)) return false;
+  statement_line_ = line_number_;
+  auto continued = [](std::string_view text) {
+    while (!text.empty() && is_blank(text.back())) text.remove_suffix(1);
+    return !text.empty() && text.back() == '\\';
+  };
+  if (!continued(line)) return true;
+  joined_.clear();
+  std::string_view piece = line;
+  for (;;) {
+    while (!piece.empty() && is_blank(piece.back())) piece.remove_suffix(1);
+    if (piece.empty() || piece.back() != '\\') {
+      joined_ += piece;
+      break;
+    }
+    piece.remove_suffix(1);
+    joined_ += piece;
+    joined_ += ' ';
+    if (joined_.size() > limits_.max_line_bytes) {
+      line_too_long_ = true;
+      return false;
+    }
+    if (!next_physical_line(piece)) break;
+  }
+  line = joined_;
+  return true;
+}
+
+Result<void> ObjReader::read_vertex(std::string_view rest) {
+  std::array<double, 3> p{};
+  for (int k = 0; k < 3; ++k) {
+    const std::string_view token = next_token(rest);
+    if (token.empty()) {
+      return error_here(
+          fmt::format("vertex has {} coordinate{}, expected 3", k, k == 1 ? "" : "s"));
+    }
+    if (!parse_double(token, p[k])) {
+      return error_here(fmt::format("vertex coordinate {} is not a number", quote(token)));
+    }
+    if (!std::isfinite(p[k])) {
+      return error_here(fmt::format(
+          "vertex coordinate {} is not finite; NaN and infinity cannot be sliced", quote(token)));
+    }
+  }
+  soup_.points.push_back(p);
+  return {};
+}
+
+Result<void> ObjReader::read_face(std::string_view rest) {
+  const std::size_t first = soup_.corners.size();
+  for (std::string_view corner = next_token(rest); !corner.empty(); corner = next_token(rest)) {
+    const std::string_view index_text = corner.substr(0, corner.find('/'));
+    long long index = 0;
+    const char* begin = index_text.data();
+    const char* end = begin + index_text.size();
+    const auto [ptr, ec] = std::from_chars(begin, end, index);
+    if (ec != std::errc() || ptr != end || begin == end) {
+      return error_here(fmt::format("face corner {} is not a vertex index", quote(corner)));
+    }
+    const auto defined = static_cast<long long>(soup_.points.size());
+    if (index == 0) {
+      return error_here("face uses vertex index 0; OBJ indices count from 1");
+    }
+    if (index < 0) {
+      if (-index > defined) {
+        return error_here(fmt::format(
+            "face uses relative vertex index {}, but only {} vertices are defined so far", index,
+            defined));
+      }
+      soup_.corners.push_back(static_cast<std::size_t>(defined + index));
+    } else {
+      // Checked once all vertices are known: some writers put vertices after the faces.
+      soup_.corners.push_back(static_cast<std::size_t>(index - 1));
+    }
+  }
+  if (soup_.corners.size() - first > 2 &&
+      soup_.num_faces() + soup_.corners.size() - first - 2 > limits_.max_triangles) {
+    return error_here(fmt::format("more than the limit of {} facets", limits_.max_triangles));
+  }
+  soup_.face_offsets.push_back(soup_.corners.size());
+  soup_.face_lines.push_back(statement_line_);
+  return {};
+}
+
+Result<PolygonSoup> ObjReader::read() {
+  std::string_view line;
+  while (next_line(line)) {
+    std::string_view rest = line;
+    const std::string_view word = next_token(rest);
+    if (word.empty() || word.front() == '#') continue;
+    if (word == "v") {
+      if (auto r = read_vertex(rest); !r) return r.error();
+    } else if (word == "f" || word == "fo") {
+      if (auto r = read_face(rest); !r) return r.error();
+    } else if (word == "vt" || word == "vn" || word == "vp" || word == "g" || word == "o" ||
+               word == "s" || word == "usemtl" || word == "mtllib" || word == "l" || word == "p") {
+      // Texture, normals, grouping, materials and lower-dimensional elements: not geometry.
+    } else {
+      tally_.add("obj.unknown_statement", Severity::Warning, statement_line_, [&] {
+        return fmt::format("{}:{}: statement {} ignored (only v and f are read)", name_,
+                           statement_line_, quote(word));
+      });
+    }
+  }
+  if (line_too_long_) {
+    return Error{ErrorCode::BadInput,
+                 fmt::format("line longer than the limit of {} bytes", limits_.max_line_bytes),
+                 fmt::format("{}:{}", name_, line_number_)};
+  }
+  return std::move(soup_);
+}
+
+}  // namespace
+
+Result<TriangleSoup> read_obj_bytes(std::string_view bytes, std::string_view name,
+                                    const ReadLimits& limits) {
+  ObjReader reader(bytes, name, limits);
+  Result<PolygonSoup> polygons = reader.read();
+  if (!polygons) return polygons.error();
+  Result<TriangleSoup> soup = triangulate_polygons(*polygons, name, "OBJ", 1, limits);
+  if (!soup) return soup;
+  Diagnostics own = reader.take_diagnostics();
+  soup->diagnostics.insert(soup->diagnostics.begin(), own.begin(), own.end());
+  soup->format = "obj";
+  return soup;
+}
+
+}  // namespace strata::io::detail

@@ -1,0 +1,619 @@
+// STL reading: binary and ASCII, told apart by content (SPEC §2, STYLE §4).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "io/read_mesh_internal.hpp"
+#include "io/stl_format_internal.hpp"
+#include "strata/io/read_mesh.hpp"
+
+namespace strata::io {
+namespace {
+
+using detail::DiagnosticTally;
+using detail::kStlBinaryFacetBytes;
+using detail::kStlBinaryHeaderBytes;
+using detail::StlBinaryFit;
+using detail::StlBinaryLayout;
+
+Error bad_input(std::string location, std::string message) {
+  return Error{ErrorCode::BadInput, std::move(message), std::move(location)};
+}
+
+std::string line_location(std::string_view name, std::size_t line) {
+  return fmt::format("{}:{}", name, line);
+}
+
+std::string facet_location(std::string_view name, std::size_t facet) {
+  return fmt::format("{}: facet {}", name, facet);
+}
+
+/// Quotes a piece of input for a message, cut short and with control bytes replaced, so that a
+/// binary file read as text cannot fill a terminal with garbage.
+std::string quote(std::string_view text) {
+  constexpr std::size_t kMaxChars = 60;
+  std::string out = "'";
+  for (std::size_t i = 0; i < text.size() && i < kMaxChars; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c < 0x20 || c == 0x7f) {
+      out += fmt::format("\\x{:02x}", c);
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  if (text.size() > kMaxChars) out += "...";
+  out += "'";
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Binary
+
+float load_float32_le(const char* p) {
+  std::uint32_t bits = 0;
+  std::memcpy(&bits, p, sizeof bits);
+  if constexpr (std::endian::native == std::endian::big) {
+    bits = (bits >> 24) | ((bits >> 8) & 0xff00u) | ((bits << 8) & 0xff0000u) | (bits << 24);
+  }
+  return std::bit_cast<float>(bits);
+}
+
+Result<TriangleSoup> read_stl_binary(std::string_view bytes, std::string_view name,
+                                     const StlBinaryLayout& layout, const ReadLimits& limits) {
+  const std::uint32_t count = layout.declared_facets;
+  if (count == 0) {
+    return bad_input(std::string(name), "no facets: the binary STL header declares 0 facets");
+  }
+  // Checked before any allocation: a hostile header must not make us reserve gigabytes.
+  if (count > limits.max_triangles) {
+    return bad_input(std::string(name),
+                     fmt::format("header declares {} facets, more than the limit of {}", count,
+                                 limits.max_triangles));
+  }
+
+  TriangleSoup soup;
+  soup.format = "stl-binary";
+  soup.triangles.reserve(count);
+  soup.stored_normals.reserve(count);
+  DiagnosticTally tally("facet");
+
+  const char* record = bytes.data() + kStlBinaryHeaderBytes;
+  for (std::uint32_t f = 0; f < count; ++f, record += kStlBinaryFacetBytes) {
+    std::array<float, 12> v{};
+    for (std::size_t k = 0; k < v.size(); ++k) v[k] = load_float32_le(record + 4 * k);
+
+    std::array<Vec3, 3> triangle;
+    for (int c = 0; c < 3; ++c) {
+      const float x = v[3 + 3 * c];
+      const float y = v[4 + 3 * c];
+      const float z = v[5 + 3 * c];
+      if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
+        return bad_input(facet_location(name, f),
+                         fmt::format("corner {} has a non-finite coordinate ({}, {}, {}); NaN and "
+                                     "infinity cannot be sliced",
+                                     c, x, y, z));
+      }
+      // float -> double is exact (SPEC §2).
+      triangle[c] = Vec3{x, y, z};
+    }
+    Vec3 normal{v[0], v[1], v[2]};
+    if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
+      tally.add("stl.bad_normal", Severity::Warning, f, [&] {
+        return fmt::format(
+            "{}: stored normal ({}, {}, {}) is not finite; the normal is ignored, "
+            "the facet kept",
+            facet_location(name, f), v[0], v[1], v[2]);
+      });
+      normal = Vec3{};
+    }
+    soup.triangles.push_back(triangle);
+    soup.stored_normals.push_back(normal);
+  }
+
+  if (layout.fit == StlBinaryFit::TrailingBytes) {
+    soup.diagnostics.push_back(Diagnostic{
+        Severity::Warning, "stl.trailing_bytes",
+        fmt::format("{}: {} stray byte{} after the last of the {} declared facets ignored ({} of "
+                    "{} bytes used)",
+                    name, layout.trailing_bytes, layout.trailing_bytes == 1 ? "" : "s", count,
+                    layout.expected_bytes, bytes.size())});
+  }
+  tally.flush_into(soup.diagnostics);
+  return soup;
+}
+
+Error binary_size_error(std::string_view bytes, std::string_view name,
+                        const StlBinaryLayout& layout, std::string_view ascii_note) {
+  const std::uint64_t size = bytes.size();
+  std::string message;
+  if (size < layout.expected_bytes) {
+    const std::uint64_t whole = (size - kStlBinaryHeaderBytes) / kStlBinaryFacetBytes;
+    message = fmt::format("header declares {} facets, file ends after {} ({} of {} bytes)",
+                          layout.declared_facets, whole, size, layout.expected_bytes);
+  } else {
+    const std::uint64_t whole = (size - kStlBinaryHeaderBytes) / kStlBinaryFacetBytes;
+    message = fmt::format(
+        "header declares {} facets, but the file is {} bytes long, room for {} facets ({} bytes "
+        "expected)",
+        layout.declared_facets, size, whole, layout.expected_bytes);
+  }
+  if (!ascii_note.empty()) message += fmt::format("; {}", ascii_note);
+  return bad_input(std::string(name), std::move(message));
+}
+
+// ---------------------------------------------------------------------------------------------
+// ASCII
+
+constexpr bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+
+/// Splits off the next whitespace-separated token of `rest`.
+std::string_view next_token(std::string_view& rest) {
+  std::size_t i = 0;
+  while (i < rest.size() && is_blank(rest[i])) ++i;
+  std::size_t j = i;
+  while (j < rest.size() && !is_blank(rest[j])) ++j;
+  const std::string_view token = rest.substr(i, j - i);
+  rest.remove_prefix(j);
+  return token;
+}
+
+std::string_view trim(std::string_view text) {
+  while (!text.empty() && is_blank(text.front())) text.remove_prefix(1);
+  while (!text.empty() && is_blank(text.back())) text.remove_suffix(1);
+  return text;
+}
+
+/// Case-insensitive comparison with a lower-case ASCII keyword.
+bool iequals(std::string_view token, std::string_view lower) {
+  if (token.size() != lower.size()) return false;
+  for (std::size_t i = 0; i < token.size(); ++i) {
+    char c = token[i];
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    if (c != lower[i]) return false;
+  }
+  return true;
+}
+
+enum class Keyword { Solid, EndSolid, Facet, Outer, Vertex, EndLoop, EndFacet, Other };
+
+Keyword classify(std::string_view token) {
+  // Dispatch on length first: this runs once per line of multi-megabyte files.
+  switch (token.size()) {
+    case 5:
+      if (iequals(token, "solid")) return Keyword::Solid;
+      if (iequals(token, "facet")) return Keyword::Facet;
+      if (iequals(token, "outer")) return Keyword::Outer;
+      break;
+    case 6:
+      if (iequals(token, "vertex")) return Keyword::Vertex;
+      break;
+    case 7:
+      if (iequals(token, "endloop")) return Keyword::EndLoop;
+      break;
+    case 8:
+      if (iequals(token, "endsolid")) return Keyword::EndSolid;
+      if (iequals(token, "endfacet")) return Keyword::EndFacet;
+      break;
+    default:
+      break;
+  }
+  return Keyword::Other;
+}
+
+enum class NumberStatus { Ok, NotANumber, NonFinite, Overflow };
+
+/// Parses a decimal number as double, then rounds it to the nearest float32 (SPEC §2: the STL
+/// format is single precision, so ASCII and binary encodings of one model read identically).
+NumberStatus parse_float32(std::string_view token, double& out) {
+  const char* begin = token.data();
+  const char* end = begin + token.size();
+  // from_chars rejects a leading '+', which exporters do write.
+  if (begin != end && *begin == '+') {
+    ++begin;
+    if (begin == end || *begin == '-' || *begin == '+') return NumberStatus::NotANumber;
+  }
+  if (begin == end) return NumberStatus::NotANumber;
+  double value = 0.0;
+  const auto [ptr, ec] = std::from_chars(begin, end, value, std::chars_format::general);
+  if (ptr != end) return NumberStatus::NotANumber;
+  if (ec == std::errc::result_out_of_range) {
+    // from_chars leaves the value untouched; strtod gives +-HUGE_VAL on overflow and the nearest
+    // representable value (possibly 0) on underflow.
+    const std::string copy(begin, end);
+    value = std::strtod(copy.c_str(), nullptr);
+    if (std::isinf(value)) return NumberStatus::Overflow;
+  } else if (ec != std::errc()) {
+    return NumberStatus::NotANumber;
+  }
+  if (!std::isfinite(value)) return NumberStatus::NonFinite;
+  // Round to nearest gives infinity from FLT_MAX + half an ulp (2^128 - 2^103) up; checked before
+  // the cast, which C++ leaves undefined out of range.
+  if (std::fabs(value) >= 0x1.ffffffp127) return NumberStatus::Overflow;
+  out = static_cast<double>(static_cast<float>(value));
+  return NumberStatus::Ok;
+}
+
+class AsciiStlParser {
+ public:
+  AsciiStlParser(std::string_view text, std::string_view name, const ReadLimits& limits)
+      : text_(text), name_(name), limits_(limits) {}
+
+  Result<TriangleSoup> parse();
+
+  /// True once a `facet` or `endsolid` line has been seen: the file is ASCII STL for sure, so
+  /// its own error (with a line) is the one to report.
+  bool recognised() const { return recognised_; }
+
+ private:
+  enum class State { Top, InSolid, InFacet };
+
+  /// Moves to the next line; false at the end of the text or on a line that is too long.
+  bool next_line(std::string_view& line);
+  Error error_here(std::string message) const {
+    return bad_input(line_location(name_, line_number_), std::move(message));
+  }
+  void begin_facet(std::string_view rest);
+  Result<void> add_vertex(std::string_view rest);
+  Result<void> finish_facet();
+  void note_trailing(std::string_view keyword, std::string_view rest);
+
+  std::string_view text_;
+  std::string_view name_;
+  const ReadLimits& limits_;
+  std::size_t pos_ = 0;
+  std::size_t line_number_ = 0;
+  bool line_too_long_ = false;
+  bool recognised_ = false;
+
+  TriangleSoup soup_;
+  DiagnosticTally tally_{"line"};
+  std::vector<Vec3> facet_vertices_;
+  Vec3 facet_normal_;
+  std::size_t facet_line_ = 0;
+  std::size_t skipped_facets_ = 0;
+};
+
+bool AsciiStlParser::next_line(std::string_view& line) {
+  const std::size_t size = text_.size();
+  if (pos_ >= size) return false;
+  ++line_number_;
+  const char* begin = text_.data() + pos_;
+  const std::size_t available = size - pos_;
+  const std::size_t window = std::min(available, limits_.max_line_bytes + 1);
+  const char* end_of_window = begin + window;
+  const char* eol = begin;
+  // CR, LF, CRLF and bare-CR files all occur in the wild.
+  while (eol < end_of_window && *eol != '\n' && *eol != '\r') ++eol;
+  if (eol == end_of_window && available > limits_.max_line_bytes) {
+    line_too_long_ = true;
+    return false;
+  }
+  line = std::string_view(begin, static_cast<std::size_t>(eol - begin));
+  pos_ += line.size();
+  if (pos_ < size) {
+    const bool crlf = text_[pos_] == '\r' && pos_ + 1 < size && text_[pos_ + 1] == '\n';
+    pos_ += crlf ? 2 : 1;
+  }
+  return true;
+}
+
+void AsciiStlParser::begin_facet(std::string_view rest) {
+  facet_vertices_.clear();
+  facet_line_ = line_number_;
+  facet_normal_ = Vec3{};
+  const std::string_view after_facet = trim(rest);
+  const std::string_view word = next_token(rest);
+  const bool has_keyword = iequals(word, "normal");
+  const std::string_view values = has_keyword ? trim(rest) : after_facet;
+  std::array<double, 3> n{};
+  bool ok = has_keyword;
+  for (int k = 0; ok && k < 3; ++k) {
+    ok = parse_float32(next_token(rest), n[k]) == NumberStatus::Ok;
+  }
+  if (!ok) {
+    tally_.add("stl.bad_normal", Severity::Warning, line_number_, [&] {
+      return values.empty() || word.empty()
+                 ? fmt::format("{}: facet has no stored normal values; the facet is kept",
+                               line_location(name_, line_number_))
+                 : fmt::format(
+                       "{}: stored normal {} is not three finite numbers; the normal is "
+                       "ignored, the facet kept",
+                       line_location(name_, line_number_), quote(values));
+    });
+    return;
+  }
+  facet_normal_ = Vec3{n[0], n[1], n[2]};
+  note_trailing("facet normal", rest);
+}
+
+Result<void> AsciiStlParser::add_vertex(std::string_view rest) {
+  std::array<double, 3> p{};
+  for (int k = 0; k < 3; ++k) {
+    const std::string_view token = next_token(rest);
+    if (token.empty()) {
+      return error_here(
+          fmt::format("vertex has {} coordinate{}, expected 3", k, k == 1 ? "" : "s"));
+    }
+    switch (parse_float32(token, p[k])) {
+      case NumberStatus::Ok:
+        break;
+      case NumberStatus::NotANumber:
+        return error_here(fmt::format("vertex coordinate {} is not a number", quote(token)));
+      case NumberStatus::NonFinite:
+        return error_here(fmt::format(
+            "vertex coordinate {} is not finite; NaN and infinity cannot be sliced", quote(token)));
+      case NumberStatus::Overflow:
+        return error_here(
+            fmt::format("vertex coordinate {} is outside the single-precision range of STL (|x| <= "
+                        "3.4028235e38)",
+                        quote(token)));
+    }
+  }
+  const std::string_view extra = next_token(rest);
+  if (!extra.empty()) {
+    return error_here(
+        fmt::format("vertex has more than 3 coordinates (unexpected {})", quote(extra)));
+  }
+  facet_vertices_.push_back(Vec3{p[0], p[1], p[2]});
+  return {};
+}
+
+Result<void> AsciiStlParser::finish_facet() {
+  const std::size_t n = facet_vertices_.size();
+  if (n < 3) {
+    ++skipped_facets_;
+    tally_.add("stl.short_facet", Severity::Warning, facet_line_, [&] {
+      return fmt::format("{}: facet has {} {}, so no area; skipped",
+                         line_location(name_, facet_line_), n, n == 1 ? "vertex" : "vertices");
+    });
+    return {};
+  }
+  if (n > 3) {
+    tally_.add("stl.polygon_facet", Severity::Warning, facet_line_, [&] {
+      return fmt::format("{}: facet has {} vertices; triangulated as a fan of {} triangles",
+                         line_location(name_, facet_line_), n, n - 2);
+    });
+  }
+  if (soup_.triangles.size() + (n - 2) > limits_.max_triangles) {
+    return bad_input(line_location(name_, facet_line_),
+                     fmt::format("more than the limit of {} facets", limits_.max_triangles));
+  }
+  for (std::size_t k = 1; k + 1 < n; ++k) {
+    soup_.triangles.push_back({facet_vertices_[0], facet_vertices_[k], facet_vertices_[k + 1]});
+    soup_.stored_normals.push_back(facet_normal_);
+  }
+  return {};
+}
+
+void AsciiStlParser::note_trailing(std::string_view keyword, std::string_view rest) {
+  const std::string_view extra = trim(rest);
+  if (extra.empty()) return;
+  tally_.add("stl.trailing_tokens", Severity::Warning, line_number_, [&] {
+    return fmt::format("{}: unexpected text {} after '{}' ignored",
+                       line_location(name_, line_number_), quote(extra), keyword);
+  });
+}
+
+Result<TriangleSoup> AsciiStlParser::parse() {
+  soup_.format = "stl-ascii";
+  State state = State::Top;
+  std::size_t solids = 0;
+  std::size_t solid_line = 0;
+  std::string_view line;
+
+  while (next_line(line)) {
+    std::string_view rest = line;
+    const std::string_view word = next_token(rest);
+    if (word.empty()) continue;
+    const Keyword keyword = classify(word);
+
+    if (state == State::Top) {
+      if (keyword == Keyword::Solid) {
+        ++solids;
+        solid_line = line_number_;
+        state = State::InSolid;
+        continue;
+      }
+      if (keyword == Keyword::Facet && solids > 0) {
+        tally_.add("stl.facet_outside_solid", Severity::Warning, line_number_, [&] {
+          return fmt::format("{}: facets after 'endsolid' without a new 'solid' line; read anyway",
+                             line_location(name_, line_number_));
+        });
+        state = State::InSolid;  // falls through to the facet below
+      } else if (solids > 0) {
+        // Some exporters pad the file after the last solid; nothing in it is a facet.
+        const std::size_t ignored = text_.size() - (line.data() - text_.data());
+        tally_.add("stl.content_after_endsolid", Severity::Warning, line_number_, [&] {
+          return fmt::format("{}: {} bytes after the last 'endsolid' ignored (starting {})",
+                             line_location(name_, line_number_), ignored, quote(line));
+        });
+        pos_ = text_.size();
+        break;
+      } else {
+        return error_here(fmt::format("expected 'solid', found {}", quote(word)));
+      }
+    }
+
+    if (state == State::InFacet) {
+      switch (keyword) {
+        case Keyword::Vertex:
+          if (auto r = add_vertex(rest); !r) return r.error();
+          continue;
+        case Keyword::Outer: {
+          const std::string_view loop = next_token(rest);
+          if (!iequals(loop, "loop")) {
+            note_trailing("outer",
+                          std::string_view(loop.data(), line.data() + line.size() - loop.data()));
+          } else {
+            note_trailing("outer loop", rest);
+          }
+          continue;
+        }
+        case Keyword::EndLoop:
+          note_trailing("endloop", rest);
+          continue;
+        case Keyword::EndFacet:
+          note_trailing("endfacet", rest);
+          if (auto r = finish_facet(); !r) return r.error();
+          state = State::InSolid;
+          continue;
+        case Keyword::Facet:
+        case Keyword::EndSolid:
+        case Keyword::Solid:
+          tally_.add("stl.missing_endfacet", Severity::Warning, facet_line_, [&] {
+            return fmt::format("{}: facet has no 'endfacet' line; read up to line {}",
+                               line_location(name_, facet_line_), line_number_);
+          });
+          if (auto r = finish_facet(); !r) return r.error();
+          state = State::InSolid;
+          break;  // handled as in a solid below
+        case Keyword::Other:
+          return error_here(
+              fmt::format("expected 'vertex', 'endloop' or 'endfacet', found {}", quote(word)));
+      }
+    }
+
+    // state == State::InSolid
+    switch (keyword) {
+      case Keyword::Facet:
+        if (!recognised_) {
+          // Reserved only once the text is known to be ASCII STL, not for a binary file whose
+          // header starts with "solid". About 250 bytes a facet in typical exporters' output.
+          soup_.triangles.reserve(std::min(text_.size() / 256, limits_.max_triangles));
+          soup_.stored_normals.reserve(soup_.triangles.capacity());
+        }
+        recognised_ = true;
+        begin_facet(rest);
+        state = State::InFacet;
+        break;
+      case Keyword::EndSolid:
+        recognised_ = true;
+        state = State::Top;
+        break;
+      case Keyword::Solid:
+        tally_.add("stl.missing_endsolid", Severity::Warning, solid_line, [&] {
+          return fmt::format("{}: solid has no 'endsolid' line", line_location(name_, solid_line));
+        });
+        ++solids;
+        solid_line = line_number_;
+        break;
+      case Keyword::Vertex:
+      case Keyword::Outer:
+      case Keyword::EndLoop:
+      case Keyword::EndFacet:
+        return error_here(fmt::format("{} outside a facet", quote(word)));
+      case Keyword::Other:
+        return error_here(fmt::format("expected 'facet' or 'endsolid', found {}", quote(word)));
+    }
+  }
+
+  if (line_too_long_) {
+    return bad_input(line_location(name_, line_number_),
+                     fmt::format("line longer than the limit of {} bytes", limits_.max_line_bytes));
+  }
+  if (state == State::InFacet) {
+    return bad_input(
+        line_location(name_, line_number_),
+        fmt::format("file ends inside the facet that starts at line {} (truncated?)", facet_line_));
+  }
+  if (state == State::InSolid) {
+    tally_.add("stl.missing_endsolid", Severity::Warning, solid_line, [&] {
+      return fmt::format("{}: solid has no 'endsolid' line (file ends at line {})",
+                         line_location(name_, solid_line), line_number_);
+    });
+  }
+  if (soup_.triangles.empty()) {
+    return bad_input(
+        std::string(name_),
+        skipped_facets_ == 0
+            ? std::string("no facets: the file holds no facet")
+            : fmt::format("no facets: all {} facets have fewer than 3 vertices", skipped_facets_));
+  }
+  if (solids > 1) {
+    soup_.diagnostics.push_back(
+        Diagnostic{Severity::Info, "stl.multiple_solids",
+                   fmt::format("{}: {} solids in one file; all are read", name_, solids)});
+  }
+  tally_.flush_into(soup_.diagnostics);
+  return std::move(soup_);
+}
+
+}  // namespace
+
+namespace detail {
+
+StlBinaryLayout stl_binary_layout(std::string_view bytes) {
+  StlBinaryLayout layout;
+  if (bytes.size() < kStlBinaryHeaderBytes) return layout;
+  std::uint32_t count = 0;
+  std::memcpy(&count, bytes.data() + 80, sizeof count);
+  if constexpr (std::endian::native == std::endian::big) {
+    count = (count >> 24) | ((count >> 8) & 0xff00u) | ((count << 8) & 0xff0000u) | (count << 24);
+  }
+  layout.declared_facets = count;
+  layout.expected_bytes =
+      kStlBinaryHeaderBytes + std::uint64_t{kStlBinaryFacetBytes} * std::uint64_t{count};
+  const std::uint64_t size = bytes.size();
+  if (size == layout.expected_bytes) {
+    layout.fit = StlBinaryFit::Exact;
+  } else if (size > layout.expected_bytes && size - layout.expected_bytes < kStlBinaryFacetBytes) {
+    layout.fit = StlBinaryFit::TrailingBytes;
+    layout.trailing_bytes = size - layout.expected_bytes;
+  } else {
+    layout.fit = StlBinaryFit::Mismatch;
+  }
+  return layout;
+}
+
+bool starts_with_solid(std::string_view bytes) {
+  if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
+  std::size_t i = 0;
+  while (i < bytes.size() && (is_blank(bytes[i]) || bytes[i] == '\n' || bytes[i] == '\r')) ++i;
+  return iequals(bytes.substr(i, 5), "solid") && (i + 5 == bytes.size() || is_blank(bytes[i + 5]) ||
+                                                  bytes[i + 5] == '\n' || bytes[i + 5] == '\r');
+}
+
+}  // namespace detail
+
+Result<TriangleSoup> read_stl_bytes(std::string_view bytes, std::string_view name,
+                                    const ReadLimits& limits) {
+  if (bytes.empty()) return bad_input(std::string(name), "empty file (0 bytes)");
+
+  const StlBinaryLayout layout = detail::stl_binary_layout(bytes);
+  if (layout.fit == StlBinaryFit::Exact || layout.fit == StlBinaryFit::TrailingBytes) {
+    return read_stl_binary(bytes, name, layout, limits);
+  }
+
+  std::string ascii_note;
+  if (detail::starts_with_solid(bytes)) {
+    std::string_view text = bytes;
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+    AsciiStlParser parser(text, name, limits);
+    Result<TriangleSoup> ascii = parser.parse();
+    if (ascii || parser.recognised() || layout.fit == StlBinaryFit::TooShort) return ascii;
+    // A binary file whose header happens to start with "solid": its size is the real problem.
+    ascii_note = fmt::format("the file starts with 'solid' but is not ASCII STL either ({})",
+                             ascii.error().to_string());
+  }
+  if (layout.fit == StlBinaryFit::TooShort) {
+    return bad_input(std::string(name),
+                     fmt::format("not an STL file: {} bytes is too short for a binary STL header "
+                                 "(84 bytes) and the text does not start with 'solid'",
+                                 bytes.size()));
+  }
+  return binary_size_error(bytes, name, layout, ascii_note);
+}
+
+}  // namespace strata::io
