@@ -1,0 +1,65 @@
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "strata/mesh/triangle_soup.hpp"
+#include "strata/mesh/weld_vertices.hpp"
+#include "strata/pipeline/slice_model.hpp"
+
+namespace strata::testing {
+
+/// A slice kept in memory: the classes of every layer, for small grids.
+struct SlicedCells {
+  GridSpec grid;
+  std::vector<std::vector<CellClass>> layers;
+  SliceSummary summary;
+
+  CellClass at(std::uint32_t i, std::uint32_t j, std::uint32_t k) const {
+    return layers[k][std::size_t{j} * grid.nx + i];
+  }
+  std::uint64_t solid() const { return summary.class_counts[1] + summary.class_counts[2]; }
+};
+
+inline SlicedCells slice_in_memory(const TriangleSoup& soup, const SliceOptions& options) {
+  class Sink final : public LayerSink {
+   public:
+    explicit Sink(SlicedCells& out) : out_(out) {}
+    Result<void> begin(const SliceRunInfo& run) override {
+      out_.grid = run.grid;
+      return {};
+    }
+    Result<void> add_layer(const LayerResult& layer) override {
+      out_.layers.push_back(layer.cells);
+      return {};
+    }
+    Result<void> finish() override { return {}; }
+    void abort() noexcept override {}
+
+   private:
+    SlicedCells& out_;
+  };
+  SlicedCells out;
+  const IndexedMesh mesh = weld_vertices(soup);
+  auto grid = make_grid(mesh.bounds(), options.grid);
+  EXPECT_TRUE(grid.has_value());
+  if (!grid) return out;
+  Sink sink(out);
+  LayerSink* sinks[] = {&sink};
+  auto summary = slice_model(mesh, *grid, options, sinks);
+  EXPECT_TRUE(summary.has_value()) << (summary ? "" : summary.error().to_string());
+  if (summary) out.summary = *summary;
+  return out;
+}
+
+inline SliceOptions cells_of(double d, ShellMode mode = ShellMode::Distance, double shell = 0.5) {
+  SliceOptions o;
+  o.grid.dx_mm = o.grid.dy_mm = o.grid.dz_mm = d;
+  o.shell_mode = mode;
+  o.shell_mm = shell;
+  return o;
+}
+
+}  // namespace strata::testing

@@ -1,0 +1,111 @@
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "voxel/triangle_distance_filter_internal.hpp"
+
+namespace strata::detail {
+namespace {
+
+using Filter = TriangleDistanceFilter;
+
+// Whatever the filter decides must be what the exact predicate says.
+void expect_consistent(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p, double t,
+                       int* decided = nullptr) {
+  const Filter filter(a, b, c, t);
+  const int quick = filter.decide(p);
+  const bool exact = triangle_closer_than(p, a, b, c, t);
+  if (quick != Filter::kUndecided) {
+    ASSERT_EQ(quick == Filter::kCloser, exact)
+        << "p=(" << p.x << "," << p.y << "," << p.z << ") t=" << t;
+    if (decided) ++*decided;
+  }
+  EXPECT_EQ(filter.closer_than(p), exact);
+}
+
+TEST(TriangleDistanceFilter, AgreesWithExactPredicateOnRandomTriangles) {
+  const std::uint64_t seed = 20261122;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> coord(-5.0, 5.0);
+  int decided = 0;
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 a{coord(rng), coord(rng), coord(rng)};
+    const Vec3 b{coord(rng), coord(rng), coord(rng)};
+    const Vec3 c{coord(rng), coord(rng), coord(rng)};
+    const Vec3 p{coord(rng), coord(rng), coord(rng)};
+    expect_consistent(a, b, c, p, std::fabs(coord(rng)) + 0.01, &decided);
+    if (HasFatalFailure()) FAIL() << "seed " << seed << " case " << i;
+  }
+  // The filter is only worth having if it decides nearly everything.
+  EXPECT_GT(decided, n * 95 / 100);
+}
+
+TEST(TriangleDistanceFilter, AgreesOnExactTiesAtTheThickness) {
+  // Axis-aligned facet z = 0 over [0,4]^2; centres at distance exactly t above it, beside an edge
+  // and beside a corner.
+  const Vec3 a{0, 0, 0}, b{4, 0, 0}, c{0, 4, 0};
+  for (const Vec3& p : {Vec3{1, 1, 1.5}, Vec3{2, -1.5, 0}, Vec3{-1.5, 2, 0}, Vec3{-0.9, -1.2, 0},
+                        Vec3{1, 1, -1.5}, Vec3{3.5, 3.5, 0}}) {
+    expect_consistent(a, b, c, p, 1.5);
+    // Exactly at t is not closer than t.
+  }
+  EXPECT_FALSE(Filter(a, b, c, 1.5).closer_than({1, 1, 1.5}));
+  // Beside the corner at distance exactly 1.25 (0.75^2 + 1^2 = 1.25^2, all dyadic).
+  expect_consistent(a, b, c, {-0.75, -1.0, 0}, 1.25);
+  EXPECT_FALSE(Filter(a, b, c, 1.25).closer_than({-0.75, -1.0, 0}));
+  EXPECT_TRUE(Filter(a, b, c, 1.25).closer_than({-0.75, -0.9999999999, 0}));
+  EXPECT_TRUE(Filter(a, b, c, 1.5).closer_than({1, 1, 1.4999999999}));
+}
+
+TEST(TriangleDistanceFilter, AgreesOnDegenerateAndSliverTriangles) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> coord(-2.0, 2.0);
+  for (int i = 0; i < 3000; ++i) {
+    const Vec3 a{coord(rng), coord(rng), coord(rng)};
+    const Vec3 b{coord(rng), coord(rng), coord(rng)};
+    const double s = coord(rng);
+    // Collinear (zero-area), coincident corners, and slivers a hair off the line.
+    const Vec3 on_line{a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), a.z + s * (b.z - a.z)};
+    const Vec3 sliver{on_line.x + 1e-12, on_line.y, on_line.z - 1e-13};
+    const Vec3 p{coord(rng), coord(rng), coord(rng)};
+    const double t = std::fabs(coord(rng)) + 0.05;
+    expect_consistent(a, b, on_line, p, t);
+    expect_consistent(a, a, b, p, t);
+    expect_consistent(a, a, a, p, t);
+    expect_consistent(a, b, sliver, p, t);
+    if (HasFatalFailure()) FAIL() << "case " << i;
+  }
+}
+
+TEST(TriangleDistanceFilter, AgreesAtMetreScaleCoordinates) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> local(-0.3, 0.3);
+  const Vec3 base{1812.25, 987.5, 640.125};
+  const auto near_base = [&] {
+    return Vec3{base.x + local(rng), base.y + local(rng), base.z + local(rng)};
+  };
+  for (int i = 0; i < 5000; ++i) {
+    expect_consistent(near_base(), near_base(), near_base(), near_base(),
+                      0.1 + std::fabs(local(rng)));
+    if (HasFatalFailure()) FAIL() << "case " << i;
+  }
+}
+
+TEST(TriangleDistanceFilter, AgreesForPointsPlacedNearTheThreshold) {
+  // Points at t(1 +- 1e-13) from a slanted facet: the filter must hand these to the exact test.
+  const Vec3 a{0.1, 0.2, 0.3}, b{3.7, 0.9, 1.3}, c{1.1, 2.9, -0.7};
+  const Vec3 e1{b.x - a.x, b.y - a.y, b.z - a.z}, e2{c.x - a.x, c.y - a.y, c.z - a.z};
+  Vec3 n{e1.y * e2.z - e1.z * e2.y, e1.z * e2.x - e1.x * e2.z, e1.x * e2.y - e1.y * e2.x};
+  const double len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+  n = {n.x / len, n.y / len, n.z / len};
+  const Vec3 centroid{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3};
+  for (const double f : {1 - 1e-13, 1 - 1e-15, 1.0, 1 + 1e-15, 1 + 1e-13}) {
+    const double t = 0.5;
+    const Vec3 p{centroid.x + n.x * t * f, centroid.y + n.y * t * f, centroid.z + n.z * t * f};
+    expect_consistent(a, b, c, p, t);
+  }
+}
+
+}  // namespace
+}  // namespace strata::detail
