@@ -20,5 +20,6 @@ using CommandRunner = std::function<int()>;
 void register_slice_command(CLI::App& app, CommandRunner& runner);
 void register_info_command(CLI::App& app, CommandRunner& runner);
 void register_check_command(CLI::App& app, CommandRunner& runner);
+void register_validate_command(CLI::App& app, CommandRunner& runner);
 
 }  // namespace strata::cli

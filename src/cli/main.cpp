@@ -15,7 +15,8 @@ constexpr const char* kDescription =
     "interior (01) or boundary shell (11), decided by an exact inside rule.\n\n"
     "First run:  strata slice model.stl        (writes model-strata/ with cells, PNGs, report)\n"
     "Read back:  strata info model-strata/model.cells\n"
-    "Check mesh: strata check model.stl\n\n"
+    "Check mesh: strata check model.stl\n"
+    "Prove it:   strata validate model.stl   (fast path vs exact path, cell for cell)\n\n"
     "Exit codes: 0 success, 1 bad input, 2 bad usage, 3 internal error,\n"
     "            4 validate found cells on which the fast and exact paths differ.";
 
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
   strata::cli::register_slice_command(app, runner);
   strata::cli::register_info_command(app, runner);
   strata::cli::register_check_command(app, runner);
+  strata::cli::register_validate_command(app, runner);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

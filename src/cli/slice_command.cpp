@@ -14,6 +14,7 @@
 #include "cli/slice_cli_options.hpp"
 #include "cli/slice_report.hpp"
 #include "strata/diagnose/diagnose_mesh.hpp"
+#include "strata/exact/slice_exact.hpp"
 #include "strata/export/cells_writer.hpp"
 #include "strata/export/cli_writer.hpp"
 #include "strata/export/output_file.hpp"
@@ -76,10 +77,6 @@ int run_slice(const SliceCommandOptions& o) {
   if (!options) return report_error(options.error());
   auto formats = parse_formats(o.formats);
   if (!formats) return report_error(formats.error());
-  if (o.kernel != "fast") {
-    return report_error(Error{
-        ErrorCode::Usage, "--kernel exact is not available in this build; use --kernel fast", {}});
-  }
 
   auto model = load_model(o.model);
   if (!model) return report_error(model.error());
@@ -137,9 +134,12 @@ int run_slice(const SliceCommandOptions& o) {
   Result<SliceSummary> summary = Error{ErrorCode::Internal, "not run", {}};
   {
     ProgressLine progress("slicing " + model->path.filename().string());
-    summary =
-        slice_model(model->mesh, *grid, *options, sinks,
-                    [&](std::uint32_t done, std::uint32_t total) { progress.update(done, total); });
+    const ProgressCallback on_progress = [&](std::uint32_t done, std::uint32_t total) {
+      progress.update(done, total);
+    };
+    summary = o.kernel == "exact"
+                  ? slice_model_exact(model->mesh, *grid, *options, sinks, on_progress)
+                  : slice_model(model->mesh, *grid, *options, sinks, on_progress);
   }
   const auto remove_dir_if_we_made_it = [&] {
     if (!dir_existed && fs::is_empty(dir, ec)) fs::remove(dir, ec);

@@ -1,0 +1,120 @@
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+
+#include "exact/exact_cut_internal.hpp"
+
+namespace strata::exact::detail {
+namespace {
+
+/// Exact crossing points, computed on integers: every double is an integer times a power of
+/// two, so with all inputs of one edge scaled to the smallest exponent E,
+///   x = 2^E (LX W + T (HX - LX)) / W,  W = HZ - LZ,  T = Z - LZ,
+/// needs four integer operations and one reduction a coordinate. Scratch values keep their
+/// storage from one point to the next.
+class CrossingCalculator {
+ public:
+  ExactPoint2 operator()(const Vec3& lo, const Vec3& hi, double z) {
+    if (hi.z == z) return {RoundedRational(Rational(hi.x)), RoundedRational(Rational(hi.y))};
+    int e = std::numeric_limits<int>::max();
+    for (const double v : {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z, z}) {
+      if (v != 0.0) e = std::min(e, std::ilogb(v) - 52);
+    }
+    set_scaled(lz_, lo.z, e);
+    set_scaled(w_, hi.z, e);
+    w_ -= lz_;
+    set_scaled(t_, z, e);
+    t_ -= lz_;
+    return {along(lo.x, hi.x, e), along(lo.y, hi.y, e)};
+  }
+
+ private:
+  /// out = v / 2^e, an integer (v is a multiple of 2^e).
+  static void set_scaled(mpz_class& out, double v, int e) {
+    int exponent = 0;
+    const double m = std::frexp(v, &exponent);  // v = m 2^exponent, 0.5 <= |m| < 1
+    out = std::ldexp(m, 53);                    // an integer of at most 53 bits
+    const int shift = exponent - 53 - e;        // >= 0 by the choice of e
+    if (shift > 0) mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
+  }
+
+  RoundedRational along(double a, double b, int e) {
+    if (a == b) return RoundedRational(Rational(a));
+    set_scaled(la_, a, e);
+    set_scaled(lb_, b, e);
+    lb_ -= la_;  // HX - LX
+    lb_ *= t_;   // T (HX - LX)
+    la_ *= w_;   // LX W
+    la_ += lb_;  // numerator
+    mpq_set_num(q_.get_mpq_t(), la_.get_mpz_t());
+    mpq_set_den(q_.get_mpq_t(), w_.get_mpz_t());
+    mpq_canonicalize(q_.get_mpq_t());
+    if (e > 0) mpq_mul_2exp(q_.get_mpq_t(), q_.get_mpq_t(), static_cast<mp_bitcnt_t>(e));
+    if (e < 0) mpq_div_2exp(q_.get_mpq_t(), q_.get_mpq_t(), static_cast<mp_bitcnt_t>(-e));
+    return RoundedRational(Rational(q_));
+  }
+
+  mpz_class lz_, w_, t_, la_, lb_;
+  mpq_class q_;
+};
+
+}  // namespace
+
+std::vector<std::int8_t> facet_normal_x_signs(const IndexedMesh& mesh) {
+  // n.x = (b.y - a.y)(c.z - a.z) - (b.z - a.z)(c.y - a.y): the orientation of the facet projected
+  // on the (y, z) plane, taken by CGAL's filtered predicate.
+  std::vector<std::int8_t> signs(mesh.triangles.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const Vec3& a = mesh.corner(static_cast<FacetIndex>(f), 0);
+    const Vec3& b = mesh.corner(static_cast<FacetIndex>(f), 1);
+    const Vec3& c = mesh.corner(static_cast<FacetIndex>(f), 2);
+    const CGAL::Orientation o = CGAL::orientation(
+        Kernel::Point_2(a.y, a.z), Kernel::Point_2(b.y, b.z), Kernel::Point_2(c.y, c.z));
+    signs[f] = static_cast<std::int8_t>(o == CGAL::POSITIVE ? 1 : (o == CGAL::NEGATIVE ? -1 : 0));
+  }
+  return signs;
+}
+
+ExactLayer cut_layer(const IndexedMesh& mesh, std::span<const FacetIndex> candidates,
+                     std::span<const std::int8_t> normal_x_signs, std::uint32_t layer, double z) {
+  ExactLayer out;
+  out.layer = layer;
+  out.z_mm = z;
+  CrossingCalculator crossing_point;
+  // A crossed edge is shared by two facets: its point is computed once.
+  std::unordered_map<std::uint64_t, ExactPoint2> points;
+  const auto point_on = [&](const CrossedEdge& edge) -> const ExactPoint2& {
+    const std::uint64_t key = (std::uint64_t{edge.below} << 32) | edge.above;
+    auto it = points.find(key);
+    if (it == points.end()) {
+      it =
+          points
+              .emplace(key, crossing_point(mesh.vertices[edge.below], mesh.vertices[edge.above], z))
+              .first;
+    }
+    return it->second;
+  };
+  for (const FacetIndex f : candidates) {
+    const auto& t = mesh.triangles[f];
+    const bool above[3] = {mesh.vertices[t[0]].z >= z, mesh.vertices[t[1]].z >= z,
+                           mesh.vertices[t[2]].z >= z};
+    const int count = int{above[0]} + int{above[1]} + int{above[2]};
+    if (count == 0 || count == 3) continue;
+    ExactSegment s;
+    s.facet = f;
+    for (int e = 0; e < 3; ++e) {
+      const int u = e;
+      const int v = (e + 1) % 3;
+      if (above[u] && !above[v]) s.start_edge = CrossedEdge{t[v], t[u]};
+      if (!above[u] && above[v]) s.end_edge = CrossedEdge{t[u], t[v]};
+    }
+    s.start = point_on(s.start_edge);
+    s.end = point_on(s.end_edge);
+    s.zero_length = compare_xy(s.start, s.end) == 0;
+    s.normal_x_sign = normal_x_signs[f];
+    out.segments.push_back(std::move(s));
+  }
+  return out;
+}
+
+}  // namespace strata::exact::detail

@@ -1,0 +1,20 @@
+#pragma once
+
+#include "exact/exact_numbers_internal.hpp"
+#include "strata/fill/scanline_fill.hpp"
+#include "strata/slice/grid_spec.hpp"
+#include "strata/slice/slice_options.hpp"
+
+namespace strata::exact::detail {
+
+/// The inside rule of SPEC §2 on exact values: row j's scanline y = yc(j) + scan_offset (a
+/// double, computed as written) crosses a segment when exactly one end point has y below it; the
+/// crossing's exact x counts for cell i when it is greater than xc(i), adding the sign of the
+/// facet normal's x (nonzero: solid when the sum is not 0; evenodd: when the count is odd).
+/// Hatches are the inside intervals of each scanline between crossings rounded once to double.
+/// `exact_fallbacks` counts the comparisons that the nearest doubles left tied.
+/// @pre rule is NonZero or EvenOdd.
+LayerFill fill_layer(const ExactLayer& layer, const GridSpec& grid, FillRule rule,
+                     double scan_offset_mm);
+
+}  // namespace strata::exact::detail

@@ -1,0 +1,215 @@
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <new>
+
+#include "exact/exact_arrangement_internal.hpp"
+#include "exact/exact_cut_internal.hpp"
+#include "exact/exact_fill_internal.hpp"
+#include "exact/exact_kernel_internal.hpp"
+#include "exact/exact_loops_internal.hpp"
+#include "exact/exact_soup_internal.hpp"
+#include "strata/exact/slice_exact.hpp"
+
+namespace strata {
+namespace exact::detail {
+namespace {
+
+/// The number of layers whose plane zk satisfies zk <= z (zk grows with k).
+std::uint32_t layers_at_or_below(const GridSpec& grid, double z) {
+  std::uint32_t lo = 0;
+  std::uint32_t hi = grid.nz;
+  while (lo < hi) {
+    const std::uint32_t mid = lo + (hi - lo) / 2;
+    if (grid.zk(mid) <= z) {
+      lo = mid + 1;
+    } else {
+      hi = mid;
+    }
+  }
+  return lo;
+}
+
+}  // namespace
+
+Result<void> check_mesh_for_exact(const IndexedMesh& mesh) {
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    const Vec3& p = mesh.vertices[v];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+      return Error{
+          ErrorCode::BadInput,
+          fmt::format("vertex {} has a non-finite coordinate ({}, {}, {})", v, p.x, p.y, p.z),
+          {}};
+    }
+  }
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    for (const VertexIndex v : mesh.triangles[f]) {
+      if (v >= mesh.vertices.size()) {
+        return Error{ErrorCode::BadInput,
+                     fmt::format("facet {} refers to vertex {}, but the mesh has {} vertices", f, v,
+                                 mesh.vertices.size()),
+                     {}};
+      }
+    }
+  }
+  return {};
+}
+
+ExactKernel::ExactKernel(const IndexedMesh& mesh, const GridSpec& grid, const SliceOptions& options,
+                         ContourMethod method)
+    : mesh_(mesh),
+      grid_(grid),
+      options_(options),
+      method_(method),
+      soup_(std::make_unique<SoupMesh>(mesh)),
+      normal_x_signs_(facet_normal_x_signs(mesh)) {
+  // Facet f crosses layer k iff zmin(f) < zk <= zmax(f) (a vertex on the plane is above it).
+  const std::size_t n = mesh.triangles.size();
+  first_layer_.resize(n);
+  last_layer_.resize(n);
+  bucket_offsets_.assign(std::size_t{grid.nz} + 1, 0);
+  for (std::size_t f = 0; f < n; ++f) {
+    const FacetIndex fi = static_cast<FacetIndex>(f);
+    const double z_min =
+        std::min({mesh.corner(fi, 0).z, mesh.corner(fi, 1).z, mesh.corner(fi, 2).z});
+    const double z_max =
+        std::max({mesh.corner(fi, 0).z, mesh.corner(fi, 1).z, mesh.corner(fi, 2).z});
+    const std::uint32_t first = layers_at_or_below(grid, z_min);
+    const std::uint32_t end = layers_at_or_below(grid, z_max);
+    if (first < end) {
+      first_layer_[f] = first;
+      last_layer_[f] = end - 1;
+      ++bucket_offsets_[first + 1];
+    } else {
+      first_layer_[f] = std::numeric_limits<std::uint32_t>::max();
+      last_layer_[f] = 0;
+    }
+  }
+  for (std::uint32_t k = 0; k < grid.nz; ++k) bucket_offsets_[k + 1] += bucket_offsets_[k];
+  bucket_facets_.resize(bucket_offsets_[grid.nz]);
+  std::vector<std::uint32_t> cursor(bucket_offsets_.begin(), bucket_offsets_.end() - 1);
+  for (std::size_t f = 0; f < n; ++f) {
+    if (first_layer_[f] <= last_layer_[f]) {
+      bucket_facets_[cursor[first_layer_[f]]++] = static_cast<FacetIndex>(f);
+    }
+  }
+}
+
+ExactKernel::~ExactKernel() = default;
+
+void ExactKernel::prepare_batch(std::uint32_t k0, std::uint32_t k1) {
+  std::erase_if(active_, [&](FacetIndex f) { return last_layer_[f] < k0; });
+  for (std::uint32_t k = k0; k < k1 && k < grid_.nz; ++k) {
+    for (std::uint32_t r = bucket_offsets_[k]; r < bucket_offsets_[k + 1]; ++r) {
+      active_.push_back(bucket_facets_[r]);
+    }
+  }
+}
+
+LayerGeometry ExactKernel::compute_layer(std::uint32_t k) const {
+  std::vector<FacetIndex> candidates;
+  for (const FacetIndex f : active_) {
+    if (first_layer_[f] <= k && k <= last_layer_[f]) candidates.push_back(f);
+  }
+  std::sort(candidates.begin(), candidates.end());
+  const double z = grid_.zk(k);
+  const ExactLayer layer = cut_layer(mesh_, candidates, normal_x_signs_, k, z);
+
+  LayerGeometry geometry;
+  geometry.segments = static_cast<std::uint32_t>(layer.segments.size());
+  geometry.fill = fill_layer(layer, grid_, options_.fill_rule, options_.scan_offset_mm);
+  if (layer.segments.empty()) {
+    ++empty_layers_;
+    geometry.contours = finish_contours(k, z, {}, 0);
+    return geometry;
+  }
+  std::optional<std::vector<ExactLoop>> loops;
+  if (method_ == ContourMethod::Automatic) loops = soup_->chain_layer(layer);
+  if (loops) {
+    ++halfedge_layers_;
+    geometry.contours = finish_contours(k, z, std::move(*loops), 0);
+  } else {
+    ++arrangement_layers_;
+    ArrangementContours a = arrangement_contours(layer, options_.fill_rule, grid_.x0);
+    geometry.contours = finish_contours(k, z, std::move(a.loops), a.open_chains);
+  }
+  return geometry;
+}
+
+ExactSliceReport ExactKernel::report() const {
+  ExactSliceReport r = soup_->repair_report();
+  r.halfedge_layers = halfedge_layers_.load();
+  r.arrangement_layers = arrangement_layers_.load();
+  r.empty_layers = empty_layers_.load();
+  return r;
+}
+
+}  // namespace exact::detail
+
+namespace {
+
+void abort_all(std::span<LayerSink* const> sinks) {
+  for (LayerSink* sink : sinks) sink->abort();
+}
+
+void add_report_diagnostics(const ExactSliceReport& r, Diagnostics& out) {
+  if (r.polygons_removed > 0) {
+    out.push_back({Severity::Info, "exact.polygons_removed",
+                   fmt::format("exact path: the soup repair removed {} facets (repeated corners or "
+                               "duplicates); their segments still count in the cells",
+                               r.polygons_removed)});
+  }
+  if (r.points_duplicated > 0) {
+    out.push_back({Severity::Info, "exact.points_duplicated",
+                   fmt::format("exact path: orienting the soup duplicated {} non-manifold "
+                               "vertices",
+                               r.points_duplicated)});
+  }
+  if (!r.polygon_mesh && r.input_polygons > 0) {
+    out.push_back({Severity::Info, "exact.not_a_polygon_mesh",
+                   "exact path: the repaired soup is not a polygon mesh; every layer's contours "
+                   "come from the exact arrangement of its segments"});
+  }
+  if (r.polygon_mesh && r.arrangement_layers > 0) {
+    out.push_back({Severity::Info, "exact.arrangement_layers",
+                   fmt::format("exact path: {} layers did not chain through the halfedge "
+                               "structure and were assembled on the exact arrangement",
+                               r.arrangement_layers)});
+  }
+}
+
+}  // namespace
+
+Result<SliceSummary> slice_model_exact(const IndexedMesh& mesh, const GridSpec& grid,
+                                       const SliceOptions& options,
+                                       std::span<LayerSink* const> sinks,
+                                       const ProgressCallback& progress, ExactSliceReport* report) {
+  if (options.fill_rule == FillRule::Winding) {
+    return Error{ErrorCode::Usage,
+                 "--fill-rule winding is not available in this version; use nonzero or evenodd",
+                 {}};
+  }
+  if (auto ok = exact::detail::check_mesh_for_exact(mesh); !ok) return ok.error();
+  bool started = false;
+  try {
+    exact::detail::ExactKernel kernel(mesh, grid, options);
+    started = true;
+    Result<SliceSummary> result = run_slice(mesh, grid, options, kernel, sinks, progress);
+    const ExactSliceReport r = kernel.report();
+    if (report != nullptr) *report = r;
+    if (result) add_report_diagnostics(r, result->diagnostics);
+    return result;
+  } catch (const std::bad_alloc&) {
+    if (started) abort_all(sinks);
+    return Error{ErrorCode::Internal, "exact path: out of memory", {}};
+  } catch (const std::exception& e) {
+    // CGAL's failures (CGAL::Failure_exception) and broken invariants (InternalError) alike.
+    if (started) abort_all(sinks);
+    return Error{ErrorCode::Internal, fmt::format("exact path failed: {}", e.what()), {}};
+  }
+}
+
+}  // namespace strata

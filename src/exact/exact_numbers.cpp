@@ -1,0 +1,84 @@
+#include <mpfr.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "exact/exact_numbers_internal.hpp"
+
+namespace strata::exact::detail {
+namespace {
+
+/// Correct rounding for results below the normal range, where MPFR's 53-bit result would be
+/// rounded a second time: mpq_get_d truncates towards zero, so the nearest double is d or its
+/// neighbour away from zero, told apart by the exact midpoint.
+double round_small(mpq_srcptr q) {
+  const mpq_class exact(q);
+  const double d = mpq_get_d(q);
+  const int s = sgn(exact);
+  if (s == 0 || mpq_class(d) == exact) return d;
+  const double away = std::nextafter(d, s > 0 ? HUGE_VAL : -HUGE_VAL);
+  const mpq_class mid = (mpq_class(d) + mpq_class(away)) / 2;
+  const int c = s > 0 ? cmp(exact, mid) : -cmp(exact, mid);
+  if (c < 0) return d;
+  if (c > 0) return away;
+  std::int64_t bits = 0;
+  std::memcpy(&bits, &d, sizeof bits);
+  return (bits & 1) == 0 ? d : away;
+}
+
+/// A 53-bit MPFR value kept per thread, so rounding allocates nothing.
+class Scratch {
+ public:
+  Scratch() { mpfr_init2(value_, 53); }
+  ~Scratch() { mpfr_clear(value_); }
+  Scratch(const Scratch&) = delete;
+  Scratch& operator=(const Scratch&) = delete;
+  mpfr_ptr get() { return value_; }
+
+ private:
+  mpfr_t value_;
+};
+
+mpq_srcptr raw_of(const mpq_class& q) { return q.get_mpq_t(); }
+#ifdef CGAL_USE_GMP
+[[maybe_unused]] mpq_srcptr raw_of(const CGAL::Gmpq& q) { return q.mpq(); }
+#endif
+
+}  // namespace
+
+mpq_srcptr raw_mpq(const Rational& q) { return raw_of(q); }
+
+double round_to_double(mpq_srcptr q) {
+  if (mpq_sgn(q) == 0) return 0.0;
+  thread_local Scratch scratch;
+  mpfr_ptr r = scratch.get();
+  // Correctly rounded to 53 bits with MPFR's unbounded exponent: exact as a double whenever the
+  // result is a normal double (x = m 2^e with 1/2 <= |m| < 1: normal for e >= -1021).
+  mpfr_set_q(r, q, MPFR_RNDN);
+  if (mpfr_get_exp(r) < -1021) return round_small(q);
+  return mpfr_get_d(r, MPFR_RNDN);
+}
+
+int compare_with_double(const RoundedRational& q, double d) {
+  if (q.rounded < d) return -1;
+  if (q.rounded > d) return 1;
+  const Rational exact_d(d);
+  if (q.exact < exact_d) return -1;
+  if (exact_d < q.exact) return 1;
+  return 0;
+}
+
+int compare_xy(const ExactPoint2& a, const ExactPoint2& b) {
+  const auto cmp = [](const RoundedRational& u, const RoundedRational& v) {
+    if (u.rounded < v.rounded) return -1;
+    if (u.rounded > v.rounded) return 1;
+    if (u.exact < v.exact) return -1;
+    if (v.exact < u.exact) return 1;
+    return 0;
+  };
+  const int cx = cmp(a.x, b.x);
+  return cx != 0 ? cx : cmp(a.y, b.y);
+}
+
+}  // namespace strata::exact::detail

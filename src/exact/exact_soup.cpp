@@ -1,0 +1,237 @@
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstring>
+#include <limits>
+#include <set>
+#include <unordered_map>
+#include <utility>
+
+#include "exact/exact_soup_internal.hpp"
+
+namespace strata::exact::detail {
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Point3 = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point3>;
+using Polygon = std::vector<std::size_t>;
+
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
+/// Counts what orient_polygon_soup does (it copies the visitor: counters live outside).
+struct OrientCounters {
+  std::uint64_t reversed = 0;
+  std::set<std::pair<std::size_t, std::size_t>> non_manifold_edges;
+};
+
+struct OrientVisitor : PMP::Default_orientation_visitor {
+  OrientCounters* counters = nullptr;
+
+  explicit OrientVisitor(OrientCounters* c) : counters(c) {}
+  void non_manifold_edge(std::size_t a, std::size_t b, std::size_t) {
+    counters->non_manifold_edges.emplace(std::min(a, b), std::max(a, b));
+  }
+  void polygon_orientation_reversed(std::size_t) { ++counters->reversed; }
+};
+
+/// A facet by the set of its corner positions (+0 and -0 alike).
+using FacetKey = std::array<double, 9>;
+
+FacetKey key_of(std::array<Vec3, 3> corners) {
+  for (Vec3& c : corners) c = {c.x + 0.0, c.y + 0.0, c.z + 0.0};
+  std::sort(corners.begin(), corners.end(), [](const Vec3& a, const Vec3& b) {
+    if (a.x != b.x) return a.x < b.x;
+    if (a.y != b.y) return a.y < b.y;
+    return a.z < b.z;
+  });
+  return {corners[0].x, corners[0].y, corners[0].z, corners[1].x, corners[1].y,
+          corners[1].z, corners[2].x, corners[2].y, corners[2].z};
+}
+
+struct FacetKeyHash {
+  std::size_t operator()(const FacetKey& k) const {
+    std::size_t h = 1469598103934665603ull;
+    for (const double d : k) {
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, &d, sizeof bits);
+      h = (h ^ bits) * 1099511628211ull;
+      h ^= h >> 29;
+    }
+    return h;
+  }
+};
+
+bool same_edge(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b) {
+  return (p == a && q == b) || (p == b && q == a);
+}
+
+Vec3 to_vec3(const Point3& p) {
+  // The soup's points were built from doubles and only copied since: exact.
+  return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+}
+
+}  // namespace
+
+struct SoupMesh::Impl {
+  const IndexedMesh& input;
+  ExactSliceReport report;
+  Mesh mesh;
+  bool usable = false;
+  std::vector<Vec3> vertex_position;      ///< per mesh vertex
+  std::vector<std::uint32_t> face_facet;  ///< per mesh face: its input facet, or kNone
+  std::vector<std::uint32_t> facet_face;  ///< per input facet: its mesh face, or kNone
+
+  explicit Impl(const IndexedMesh& m) : input(m) {}
+};
+
+SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(input)) {
+  Impl& d = *impl_;
+  d.report.input_points = input.vertices.size();
+  d.report.input_polygons = input.triangles.size();
+
+  std::vector<Point3> points;
+  points.reserve(input.vertices.size());
+  for (const Vec3& v : input.vertices) points.emplace_back(v.x, v.y, v.z);
+  std::vector<Polygon> polygons;
+  polygons.reserve(input.triangles.size());
+  for (const auto& t : input.triangles) polygons.push_back({t[0], t[1], t[2]});
+
+  PMP::repair_polygon_soup(points, polygons);
+  d.report.points_merged = input.vertices.size() - points.size();
+  d.report.polygons_removed = input.triangles.size() - polygons.size();
+
+  OrientCounters counters;
+  const std::size_t points_before = points.size();
+  PMP::orient_polygon_soup(points, polygons, CGAL::parameters::visitor(OrientVisitor{&counters}));
+  d.report.points_duplicated = points.size() - points_before;
+  d.report.polygons_reversed = counters.reversed;
+  d.report.non_manifold_edges = counters.non_manifold_edges.size();
+
+  d.facet_face.assign(input.triangles.size(), kNone);
+  if (polygons.empty() || !PMP::is_polygon_soup_a_polygon_mesh(polygons)) return;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, d.mesh);
+  // The conversion adds vertex i for point i and face i for polygon i; check it did.
+  if (d.mesh.number_of_vertices() != points.size() || d.mesh.number_of_faces() != polygons.size()) {
+    return;
+  }
+  d.vertex_position.resize(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) d.vertex_position[i] = to_vec3(points[i]);
+
+  // Input facets by corner positions; a position set shared by several facets (duplicates,
+  // unwelded copies) maps to none of them.
+  std::unordered_map<FacetKey, std::uint32_t, FacetKeyHash> by_key;
+  by_key.reserve(input.triangles.size());
+  for (std::size_t f = 0; f < input.triangles.size(); ++f) {
+    const auto& t = input.triangles[f];
+    const FacetKey k = key_of({input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]});
+    const auto [it, inserted] = by_key.emplace(k, static_cast<std::uint32_t>(f));
+    if (!inserted) it->second = kNone;
+  }
+  d.face_facet.assign(polygons.size(), kNone);
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    const Polygon& p = polygons[i];
+    const Mesh::Face_index face(static_cast<Mesh::size_type>(i));
+    std::size_t corners = 0;
+    bool matches = p.size() == 3;
+    for (const Mesh::Vertex_index v : d.mesh.vertices_around_face(d.mesh.halfedge(face))) {
+      matches = matches && std::find(p.begin(), p.end(), static_cast<std::size_t>(v)) != p.end();
+      ++corners;
+    }
+    if (!matches || corners != 3) return;  // not the face of polygon i: no halfedge path at all
+    const FacetKey k =
+        key_of({d.vertex_position[p[0]], d.vertex_position[p[1]], d.vertex_position[p[2]]});
+    const auto it = by_key.find(k);
+    if (it == by_key.end() || it->second == kNone) continue;
+    d.face_facet[i] = it->second;
+    d.facet_face[it->second] = static_cast<std::uint32_t>(i);
+  }
+  d.usable = true;
+  d.report.polygon_mesh = true;
+}
+
+SoupMesh::~SoupMesh() = default;
+
+const ExactSliceReport& SoupMesh::repair_report() const { return impl_->report; }
+
+std::optional<std::vector<ExactLoop>> SoupMesh::chain_layer(const ExactLayer& layer) const {
+  const Impl& d = *impl_;
+  if (!d.usable) return std::nullopt;
+  const auto& segments = layer.segments;
+  const std::size_t n = segments.size();
+  constexpr std::size_t kInactive = std::numeric_limits<std::size_t>::max();
+  std::vector<Mesh::Halfedge_index> start_h(n);
+  std::vector<Mesh::Halfedge_index> end_h(n);
+  std::vector<bool> active(n, false);
+
+  for (std::size_t s = 0; s < n; ++s) {
+    const ExactSegment& seg = segments[s];
+    const std::uint32_t face = d.facet_face[seg.facet];
+    if (face == kNone) {
+      // Facets the repair dropped with a repeated corner meet the plane in one point and bound
+      // nothing; any other missing facet leaves a gap the mesh cannot walk.
+      if (seg.zero_length) continue;
+      return std::nullopt;
+    }
+    const Vec3& sb = d.input.vertices[seg.start_edge.below];
+    const Vec3& sa = d.input.vertices[seg.start_edge.above];
+    const Vec3& eb = d.input.vertices[seg.end_edge.below];
+    const Vec3& ea = d.input.vertices[seg.end_edge.above];
+    bool found_start = false;
+    bool found_end = false;
+    const Mesh::Face_index f(static_cast<Mesh::size_type>(face));
+    for (const Mesh::Halfedge_index h : d.mesh.halfedges_around_face(d.mesh.halfedge(f))) {
+      const Vec3& p = d.vertex_position[d.mesh.source(h)];
+      const Vec3& q = d.vertex_position[d.mesh.target(h)];
+      if (same_edge(p, q, sb, sa)) {
+        start_h[s] = h;
+        found_start = true;
+      } else if (same_edge(p, q, eb, ea)) {
+        end_h[s] = h;
+        found_end = true;
+      }
+    }
+    if (!found_start || !found_end) return std::nullopt;
+    active[s] = true;
+  }
+
+  // Segments are in facet order: find a facet's segment by binary search.
+  const auto segment_of = [&](std::uint32_t facet) -> std::size_t {
+    const auto it =
+        std::lower_bound(segments.begin(), segments.end(), facet,
+                         [](const ExactSegment& seg, std::uint32_t f) { return seg.facet < f; });
+    if (it == segments.end() || it->facet != facet) return kInactive;
+    return static_cast<std::size_t>(it - segments.begin());
+  };
+
+  std::vector<bool> used(n, false);
+  std::vector<ExactLoop> loops;
+  for (std::size_t seed = 0; seed < n; ++seed) {
+    if (!active[seed] || used[seed]) continue;
+    ExactLoop loop;
+    std::size_t current = seed;
+    while (true) {
+      used[current] = true;
+      loop.points.push_back(segments[current].start);
+      const Mesh::Halfedge_index across = d.mesh.opposite(end_h[current]);
+      const Mesh::Face_index next_face = d.mesh.face(across);
+      if (next_face == Mesh::null_face()) return std::nullopt;  // a border: the chain is open
+      const std::uint32_t facet = d.face_facet[next_face];
+      if (facet == kNone) return std::nullopt;
+      const std::size_t next = segment_of(facet);
+      if (next == kInactive || !active[next] || start_h[next] != across) return std::nullopt;
+      if (next == seed) break;
+      if (used[next]) return std::nullopt;
+      current = next;
+    }
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+}  // namespace strata::exact::detail
