@@ -93,7 +93,9 @@ TEST(SliceModel, BoxWithHoleGivesOuterAndHoleLoops) {
   for (const auto& loop : r.sink.loops[0]) {
     outer += loop.kind == LoopKind::Outer;
     holes += loop.kind == LoopKind::Hole;
-    if (loop.kind == LoopKind::Hole) EXPECT_EQ(loop.depth, 1);
+    if (loop.kind == LoopKind::Hole) {
+      EXPECT_EQ(loop.depth, 1);
+    }
   }
   EXPECT_EQ(outer, 1);
   EXPECT_EQ(holes, 1);
