@@ -1,0 +1,223 @@
+#include "strata/validate/validation_text.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <vector>
+
+namespace strata::validate {
+
+namespace {
+
+constexpr std::size_t kListedInText = 20;
+constexpr std::size_t kWorstLayers = 5;
+
+const char* class_code(CellClass c) {
+  switch (c) {
+    case CellClass::Empty:
+      return "00";
+    case CellClass::Interior:
+      return "01";
+    case CellClass::Boundary:
+      return "11";
+  }
+  return "10";
+}
+
+std::string thousands(std::uint64_t n) {
+  const std::string digits = std::to_string(n);
+  std::string out;
+  out.reserve(digits.size() + digits.size() / 3);
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out.push_back(',');
+    out.push_back(digits[i]);
+  }
+  return out;
+}
+
+std::string mm(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "inf"; }
+
+std::string percent_of(double value, double reference) {
+  if (reference == 0.0) return "n/a";
+  return fmt::format("{:+.3f} %", 100.0 * (value - reference) / std::fabs(reference));
+}
+
+std::string box_text(const Bbox3& b) {
+  if (b.empty()) return "none";
+  return fmt::format("({}, {}, {}) .. ({}, {}, {})", mm(b.min.x), mm(b.min.y), mm(b.min.z),
+                     mm(b.max.x), mm(b.max.y), mm(b.max.z));
+}
+
+}  // namespace
+
+std::string validation_text(const ValidationReport& r) {
+  const GridSpec& g = r.grid;
+  std::string out;
+  out += fmt::format("grid      {} x {} x {} cells of {} x {} x {} mm, origin ({}, {}, {})\n", g.nx,
+                     g.ny, g.nz, g.dx, g.dy, g.dz, g.x0, g.y0, g.z0);
+  out += fmt::format("rule      fill {}, shell {} mm ({}), scan offset {} mm\n",
+                     to_string(r.options.fill_rule), r.options.shell_mm,
+                     to_string(r.options.shell_mode), r.options.scan_offset_mm);
+
+  // Cells.
+  if (r.exact_error) {
+    out += fmt::format("cells     NOT VALIDATED: the exact path stopped: {}\n",
+                       r.exact_error->to_string());
+    if (r.layers_compared > 0) {
+      out +=
+          fmt::format("          before that, {} of {} cells differed in {} layers\n",
+                      thousands(r.cells_differing), thousands(r.cells_compared), r.layers_compared);
+    }
+  } else if (r.cells_differing == 0) {
+    out += fmt::format("cells     AGREE: {} cells compared in {} layers, none differs\n",
+                       thousands(r.cells_compared), r.layers_compared);
+  } else {
+    std::vector<std::string> parts;
+    for (std::size_t q = 0; q < kDifferenceReasonCount; ++q) {
+      if (r.differing_by_reason[q] == 0) continue;
+      parts.push_back(fmt::format("{} {}", to_string(static_cast<DifferenceReason>(q)),
+                                  thousands(r.differing_by_reason[q])));
+    }
+    out += fmt::format("cells     DIFFER: {} of {} cells ({})\n", thousands(r.cells_differing),
+                       thousands(r.cells_compared), fmt::join(parts, ", "));
+    const std::size_t shown = std::min(kListedInText, r.differences.size());
+    for (std::size_t q = 0; q < shown; ++q) {
+      const CellDifference& d = r.differences[q];
+      out += fmt::format("          cell ({}, {}, {}) at ({}, {}, {}) mm: fast {}, exact {}: {}\n",
+                         d.i, d.j, d.k, mm(g.xc(d.i)), mm(g.yc(d.j)), mm(g.zk(d.k)),
+                         class_code(d.fast), class_code(d.exact), to_string(d.reason));
+    }
+    if (r.cells_differing > shown) {
+      out += fmt::format("          ... {} more (the JSON report lists {})\n",
+                         thousands(r.cells_differing - shown), r.differences.size());
+    }
+  }
+
+  // Contours.
+  if (r.layers_compared > 0) {
+    out += fmt::format(
+        "contours  {} layers; loop counts differ in {}; symmetric difference max {} mm2, total "
+        "{} mm2; Hausdorff max {} mm\n",
+        r.layers_compared, r.layers_with_different_counts, mm(r.max_symmetric_difference_mm2),
+        mm(r.total_symmetric_difference_mm2), mm(r.max_hausdorff_mm));
+    if (r.layers_with_open_chains > 0) {
+      out += fmt::format(
+          "          {} layers have open chains (left open by the fast path, closed towards -x "
+          "by the exact path): not in the figures above; Hausdorff with them {} mm\n",
+          r.layers_with_open_chains, mm(r.max_hausdorff_all_mm));
+    }
+    if (r.layers_arrangement > 0 || r.layers_area_only > 0 || r.layers_overlay_skipped > 0) {
+      std::string extra;
+      if (r.layers_area_only > 0) {
+        extra += fmt::format(", {} compared by area only (overlay failed)", r.layers_area_only);
+      }
+      if (r.layers_overlay_skipped > 0) {
+        extra += fmt::format(", {} more differ only at rounding level and were not overlaid",
+                             r.layers_overlay_skipped);
+      }
+      out += fmt::format("          loops differ in {} layers (exact overlay){}\n",
+                         r.layers_arrangement, extra);
+    }
+    std::vector<const LayerComparison*> worst;
+    for (const LayerComparison& l : r.layers) {
+      if (l.symmetric_difference_mm2 > 0.0 || l.hausdorff_mm > 0.0 || l.cells_differing > 0) {
+        worst.push_back(&l);
+      }
+    }
+    std::sort(worst.begin(), worst.end(), [](const auto* a, const auto* b) {
+      return std::tie(a->cells_differing, a->hausdorff_mm, a->symmetric_difference_mm2) >
+             std::tie(b->cells_differing, b->hausdorff_mm, b->symmetric_difference_mm2);
+    });
+    for (std::size_t q = 0; q < std::min(kWorstLayers, worst.size()); ++q) {
+      const LayerComparison& l = *worst[q];
+      out += fmt::format(
+          "          layer {} (z {}): loops fast {}+{}h{}, exact {}+{}h{}; symmetric difference {} "
+          "mm2 ({}), Hausdorff {} mm, {} cells differ\n",
+          l.layer, mm(l.z_mm), l.fast.outer_loops, l.fast.holes,
+          l.fast.open_chains ? fmt::format("+{}open", l.fast.open_chains) : std::string(),
+          l.exact.outer_loops, l.exact.holes,
+          l.exact.open_chains ? fmt::format("+{}open", l.exact.open_chains) : std::string(),
+          mm(l.symmetric_difference_mm2), to_string(l.area_method), mm(l.hausdorff_mm),
+          l.cells_differing);
+    }
+  }
+
+  // Model.
+  const ModelFigures& m = r.model;
+  out += fmt::format("volume    mesh {} mm3 (exact, from the facets)\n", mm(m.mesh_volume_mm3));
+  // Cells have no sign: they are compared with the volume's magnitude (an inverted shell has a
+  // negative signed volume); contour areas carry the facets' orientation like the mesh volume.
+  const double magnitude = std::fabs(m.mesh_volume_mm3);
+  out += fmt::format("          cells    fast {} mm3 ({}){}\n", mm(r.fast.cell_volume_mm3),
+                     percent_of(r.fast.cell_volume_mm3, magnitude),
+                     r.exact.ran ? fmt::format(", exact {} mm3 ({})", mm(r.exact.cell_volume_mm3),
+                                               percent_of(r.exact.cell_volume_mm3, magnitude))
+                                 : std::string());
+  out += fmt::format(
+      "          contours fast {} mm3 ({}){}  (sum of layer area x dz)\n",
+      mm(r.fast.contour_volume_mm3), percent_of(r.fast.contour_volume_mm3, m.mesh_volume_mm3),
+      r.exact.ran ? fmt::format(", exact {} mm3 ({})", mm(r.exact.contour_volume_mm3),
+                                percent_of(r.exact.contour_volume_mm3, m.mesh_volume_mm3))
+                  : std::string());
+  out += fmt::format("surface   {} mm2\n", mm(m.surface_area_mm2));
+  out += fmt::format("bounds    mesh  {}\n          cells {}\n", box_text(m.mesh_bounds),
+                     box_text(r.fast.solid_bounds));
+  if (m.surface_to_boundary_mm) {
+    out += fmt::format(
+        "surface-to-shell  {} mm: the farthest of {} surface points from the nearest boundary "
+        "cell centre (a cell diagonal is {} mm)\n",
+        mm(*m.surface_to_boundary_mm), thousands(m.surface_samples),
+        mm(std::sqrt(g.dx * g.dx + g.dy * g.dy + g.dz * g.dz)));
+  }
+  if (m.shell.measured > 0) {
+    out += fmt::format(
+        "shell     asked t = {} mm ({}); interior cells next to the shell: {}{}; their distance "
+        "to the surface: min {} mm, mean {} mm, max {} mm\n",
+        m.asked_shell_mm, to_string(r.options.shell_mode), thousands(m.shell.cells),
+        m.shell.measured < m.shell.cells
+            ? fmt::format(" ({} measured)", thousands(m.shell.measured))
+            : std::string(),
+        mm(m.shell.min_mm), mm(m.shell.mean_mm), mm(m.shell.max_mm));
+  } else {
+    out += fmt::format("shell     asked t = {} mm; no interior cell touches the shell\n",
+                       m.asked_shell_mm);
+  }
+
+  // Scan offset.
+  if (r.scan_offset.measured) {
+    out += fmt::format("offset    the scan offset of {} mm changes {} cells\n",
+                       r.scan_offset.offset_mm, thousands(r.scan_offset.cells_changed));
+    const std::size_t shown = std::min(kListedInText, r.scan_offset.cells.size());
+    for (std::size_t q = 0; q < shown; ++q) {
+      const OffsetChange& c = r.scan_offset.cells[q];
+      out += fmt::format("          cell ({}, {}, {}): {} with the offset, {} without\n", c.i, c.j,
+                         c.k, class_code(c.with_offset), class_code(c.without_offset));
+    }
+    if (r.scan_offset.cells_changed > shown) {
+      out += fmt::format("          ... {} more\n", thousands(r.scan_offset.cells_changed - shown));
+    }
+  }
+
+  // Exact path's reading of the soup, and times.
+  const ExactSliceReport& s = r.exact_soup;
+  if (r.exact.ran) {
+    out += fmt::format(
+        "exact     soup: {} points merged, {} polygons removed, {} points duplicated, {} "
+        "non-manifold edges; layers by halfedges {}, by arrangement {}, empty {}\n",
+        s.points_merged, s.polygons_removed, s.points_duplicated, s.non_manifold_edges,
+        s.halfedge_layers, s.arrangement_layers, s.empty_layers);
+  }
+  out += fmt::format(
+      "time      fast {:.3f} s, exact {:.3f} s{}, comparison {:.3f} s\n", r.fast.seconds,
+      r.exact.seconds,
+      r.time_ratio() > 0 ? fmt::format(" (exact/fast {:.1f})", r.time_ratio()) : std::string(),
+      r.comparison_seconds);
+  for (const Diagnostic& d : r.diagnostics) {
+    out += fmt::format("note      {}\n", d.message);
+  }
+  return out;
+}
+
+}  // namespace strata::validate
