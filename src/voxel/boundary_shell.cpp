@@ -51,6 +51,16 @@ bool slab_footprint(const Vec3& a, const Vec3& b, const Vec3& c, double z_lo, do
   return any;
 }
 
+/// A solid cell touches the outside when one of its 6-neighbours is empty (outside the grid
+/// counts as empty; a missing layer is outside).
+bool touches_outside(const std::uint8_t* here, const std::uint8_t* below, const std::uint8_t* above,
+                     std::size_t c, std::uint32_t i, std::uint32_t j, std::uint32_t nx,
+                     std::uint32_t ny) {
+  return i == 0 || i + 1 == nx || j == 0 || j + 1 == ny || !here[c - 1] || !here[c + 1] ||
+         !here[c - nx] || !here[c + nx] || below == nullptr || !below[c] || above == nullptr ||
+         !above[c];
+}
+
 }  // namespace
 
 BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, ShellMode mode,
@@ -101,10 +111,8 @@ void BoundaryShell::classify(std::uint32_t k, const SolidLayerLookup& solid,
     for (std::uint32_t i = 0; i < nx; ++i) {
       const std::size_t c = std::size_t{j} * nx + i;
       if (!here[c]) continue;
-      const bool touches_outside = i == 0 || i + 1 == nx || j == 0 || j + 1 == ny || !here[c - 1] ||
-                                   !here[c + 1] || !here[c - nx] || !here[c + nx] ||
-                                   below == nullptr || !below[c] || above == nullptr || !above[c];
-      out[c] = touches_outside ? CellClass::Boundary : CellClass::Interior;
+      const bool outside = touches_outside(here, below, above, c, i, j, nx, ny);
+      out[c] = outside ? CellClass::Boundary : CellClass::Interior;
     }
   }
   if (mode_ == ShellMode::Distance) {
@@ -178,11 +186,8 @@ void BoundaryShell::mark_rings(std::uint32_t k, const SolidLayerLookup& solid,
       for (std::uint32_t i = 0; i < nx; ++i) {
         const std::size_t c = std::size_t{j} * nx + i;
         if (!here[c]) continue;
-        const bool touches_outside = i == 0 || i + 1 == nx || j == 0 || j + 1 == ny ||
-                                     !here[c - 1] || !here[c + 1] || !here[c - nx] ||
-                                     !here[c + nx] || below == nullptr || !below[c] ||
-                                     above == nullptr || !above[c];
-        if (touches_outside) {
+        const bool outside = touches_outside(here, below, above, c, i, j, nx, ny);
+        if (outside) {
           ring[base + c] = 1;
           frontier.push_back(base + c);
         }
