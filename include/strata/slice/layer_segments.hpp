@@ -20,7 +20,9 @@ struct CrossedEdge {
 /// The piece of one facet in one cutting plane. It runs so that the material lies on its left
 /// (outer loops counter-clockwise seen from +z, when the facet is oriented outward): it starts
 /// on the facet edge that goes down through the plane and ends on the edge that goes up, in the
-/// facet's vertex order. Coordinates are the exact crossing points rounded once to double.
+/// facet's vertex order. Coordinates are the crossing points computed in double from the edge's
+/// end points (within a few ulps of the exact point, not always its correctly rounded value);
+/// they serve output and first guesses only, every decision is taken on the exact point.
 struct LayerSegment {
   FacetIndex facet = 0;
   CrossedEdge start_edge;
