@@ -23,7 +23,8 @@ double exact_volume(const TriangleSoup& soup) {
 double relative_volume_error(const TriangleSoup& soup, double cell, double shift = 0.0) {
   SliceOptions o = cells_of(cell, ShellMode::Layers, cell);
   const Bbox3 box = weld_vertices(soup).bounds();
-  o.grid.origin = Vec3{box.min.x - shift * cell, box.min.y - shift * 0.7 * cell, box.min.z - shift * 0.3 * cell};
+  o.grid.origin = Vec3{box.min.x - shift * cell, box.min.y - shift * 0.7 * cell,
+                       box.min.z - shift * 0.3 * cell};
   const auto sliced = slice_in_memory(soup, o);
   const double cells = static_cast<double>(sliced.solid()) * cell * cell * cell;
   return (cells - exact_volume(soup)) / exact_volume(soup);

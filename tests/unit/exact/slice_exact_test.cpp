@@ -45,7 +45,11 @@ IndexedMesh prism(const std::vector<std::array<double, 2>>& base, double z0, dou
 struct Model {
   Model(std::string n, std::function<IndexedMesh()> b, double c = 1.0, std::optional<Vec3> o = {},
         bool comparable = true)
-      : name(std::move(n)), build(std::move(b)), cell(c), origin(o), contours_comparable(comparable) {}
+      : name(std::move(n)),
+        build(std::move(b)),
+        cell(c),
+        origin(o),
+        contours_comparable(comparable) {}
 
   std::string name;
   std::function<IndexedMesh()> build;

@@ -24,26 +24,24 @@ namespace {
 
 using strata::test::TempDir;
 
-float f32_at(const std::string &bytes, std::size_t offset) {
+float f32_at(const std::string& bytes, std::size_t offset) {
   std::uint32_t bits = 0;
   for (int i = 3; i >= 0; --i) {
-    bits = (bits << 8) | static_cast<unsigned char>(
-                             bytes[offset + static_cast<std::size_t>(i)]);
+    bits = (bits << 8) | static_cast<unsigned char>(bytes[offset + static_cast<std::size_t>(i)]);
   }
   return std::bit_cast<float>(bits);
 }
 
-std::uint32_t u32_at(const std::string &bytes, std::size_t offset) {
+std::uint32_t u32_at(const std::string& bytes, std::size_t offset) {
   std::uint32_t v = 0;
   for (int i = 3; i >= 0; --i) {
-    v = (v << 8) |
-        static_cast<unsigned char>(bytes[offset + static_cast<std::size_t>(i)]);
+    v = (v << 8) | static_cast<unsigned char>(bytes[offset + static_cast<std::size_t>(i)]);
   }
   return v;
 }
 
 /// The stored normal of binary facet f.
-Vec3 binary_normal(const std::string &bytes, std::size_t f) {
+Vec3 binary_normal(const std::string& bytes, std::size_t f) {
   const std::size_t at = 84 + 50 * f;
   return {f32_at(bytes, at), f32_at(bytes, at + 4), f32_at(bytes, at + 8)};
 }
@@ -53,22 +51,20 @@ bool same_bits(double a, double b) {
 }
 
 /// "" when both soups hold the same triangles, corner for corner, bit for bit.
-std::string bit_difference(const TriangleSoup &a, const TriangleSoup &b) {
+std::string bit_difference(const TriangleSoup& a, const TriangleSoup& b) {
   if (a.triangles.size() != b.triangles.size()) {
-    return std::to_string(a.triangles.size()) + " vs " +
-           std::to_string(b.triangles.size()) + " triangles";
+    return std::to_string(a.triangles.size()) + " vs " + std::to_string(b.triangles.size()) +
+           " triangles";
   }
   for (std::size_t f = 0; f < a.triangles.size(); ++f) {
     for (int c = 0; c < 3; ++c) {
-      const Vec3 &p = a.triangles[f][c];
-      const Vec3 &q = b.triangles[f][c];
-      if (!same_bits(p.x, q.x) || !same_bits(p.y, q.y) ||
-          !same_bits(p.z, q.z)) {
+      const Vec3& p = a.triangles[f][c];
+      const Vec3& q = b.triangles[f][c];
+      if (!same_bits(p.x, q.x) || !same_bits(p.y, q.y) || !same_bits(p.z, q.z)) {
         std::ostringstream out;
         out.precision(17);
-        out << "facet " << f << " corner " << c << ": (" << p.x << ", " << p.y
-            << ", " << p.z << ") vs (" << q.x << ", " << q.y << ", " << q.z
-            << ")";
+        out << "facet " << f << " corner " << c << ": (" << p.x << ", " << p.y << ", " << p.z
+            << ") vs (" << q.x << ", " << q.y << ", " << q.z << ")";
         return out.str();
       }
     }
@@ -76,14 +72,14 @@ std::string bit_difference(const TriangleSoup &a, const TriangleSoup &b) {
   return "";
 }
 
-std::string file_bytes(const std::filesystem::path &path) {
+std::string file_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream bytes;
   bytes << in.rdbuf();
   return std::move(bytes).str();
 }
 
-TriangleSoup single_triangle(const Vec3 &a, const Vec3 &b, const Vec3 &c) {
+TriangleSoup single_triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
   TriangleSoup soup;
   soup.triangles.push_back({a, b, c});
   return soup;
@@ -100,16 +96,14 @@ TEST(StlBytesBinary, HasHeaderCountAndFiftyBytesPerFacet) {
 }
 
 TEST(StlBytesBinary, HeaderNamesStrataAndDoesNotStartWithSolid) {
-  const std::string bytes =
-      stl_bytes(mesh::make_tetrahedron(), StlEncoding::Binary);
+  const std::string bytes = stl_bytes(mesh::make_tetrahedron(), StlEncoding::Binary);
   EXPECT_EQ(bytes.substr(0, 6), "strata");
   EXPECT_NE(bytes.substr(0, 5), "solid");
 }
 
 TEST(StlBytesBinary, StoresCornersAsLittleEndianFloat32) {
   const std::string bytes =
-      stl_bytes(single_triangle({1, 2, 3}, {-4, 0.5, 6}, {7, 8, -0.25}),
-                StlEncoding::Binary);
+      stl_bytes(single_triangle({1, 2, 3}, {-4, 0.5, 6}, {7, 8, -0.25}), StlEncoding::Binary);
   const std::vector<float> expected = {1, 2, 3, -4, 0.5F, 6, 7, 8, -0.25F};
   for (std::size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ(f32_at(bytes, 84 + 12 + 4 * i), expected[i]) << "value " << i;
@@ -120,10 +114,8 @@ TEST(StlBytesBinary, StoresCornersAsLittleEndianFloat32) {
 TEST(StlBytesBinary, NormalFollowsTheVertexOrder) {
   const auto up = single_triangle({0, 0, 0}, {2, 0, 0}, {0, 2, 0});
   const auto down = single_triangle({0, 0, 0}, {0, 2, 0}, {2, 0, 0});
-  EXPECT_EQ(binary_normal(stl_bytes(up, StlEncoding::Binary), 0),
-            (Vec3{0, 0, 1}));
-  EXPECT_EQ(binary_normal(stl_bytes(down, StlEncoding::Binary), 0),
-            (Vec3{0, 0, -1}));
+  EXPECT_EQ(binary_normal(stl_bytes(up, StlEncoding::Binary), 0), (Vec3{0, 0, 1}));
+  EXPECT_EQ(binary_normal(stl_bytes(down, StlEncoding::Binary), 0), (Vec3{0, 0, -1}));
 }
 
 TEST(StlBytesBinary, NormalIsNormalised) {
@@ -139,41 +131,36 @@ TEST(StlBytesBinary, BoxNormalsPointOutward) {
   const std::string bytes = stl_bytes(box, StlEncoding::Binary);
   for (std::size_t f = 0; f < box.triangles.size(); ++f) {
     const Vec3 n = binary_normal(bytes, f);
-    const Vec3 &a = box.triangles[f][0];
+    const Vec3& a = box.triangles[f][0];
     // Each box facet lies in a face plane; the normal points from the centre
     // towards it.
-    const double outward =
-        n.x * (a.x - 0.5) + n.y * (a.y - 0.5) + n.z * (a.z - 0.5);
+    const double outward = n.x * (a.x - 0.5) + n.y * (a.y - 0.5) + n.z * (a.z - 0.5);
     EXPECT_DOUBLE_EQ(outward, 0.5) << "facet " << f;
   }
 }
 
 TEST(StlBytesBinary, DegenerateFacetGetsZeroNormal) {
   const auto flat = single_triangle({0, 0, 0}, {1, 1, 1}, {2, 2, 2});
-  EXPECT_EQ(binary_normal(stl_bytes(flat, StlEncoding::Binary), 0),
-            (Vec3{0, 0, 0}));
+  EXPECT_EQ(binary_normal(stl_bytes(flat, StlEncoding::Binary), 0), (Vec3{0, 0, 0}));
 }
 
 TEST(StlBytesBinary, IgnoresStoredNormals) {
   auto soup = single_triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
   soup.stored_normals.push_back({1, 0, 0});
-  EXPECT_EQ(binary_normal(stl_bytes(soup, StlEncoding::Binary), 0),
-            (Vec3{0, 0, 1}));
+  EXPECT_EQ(binary_normal(stl_bytes(soup, StlEncoding::Binary), 0), (Vec3{0, 0, 1}));
 }
 
 // --- stl_bytes, ASCII
 // ------------------------------------------------------------------------
 
 TEST(StlBytesAscii, IsOneSolidNamedStrata) {
-  const std::string text =
-      stl_bytes(mesh::make_tetrahedron(), StlEncoding::Ascii);
+  const std::string text = stl_bytes(mesh::make_tetrahedron(), StlEncoding::Ascii);
   EXPECT_EQ(text.rfind("solid strata\n", 0), 0U);
   EXPECT_TRUE(text.ends_with("endsolid strata\n"));
 }
 
 TEST(StlBytesAscii, WritesOneFacetBlockPerTriangle) {
-  const std::string text =
-      stl_bytes(mesh::make_box({0, 0, 0}, {1, 1, 1}), StlEncoding::Ascii);
+  const std::string text = stl_bytes(mesh::make_box({0, 0, 0}, {1, 1, 1}), StlEncoding::Ascii);
   std::size_t facets = 0;
   std::size_t vertices = 0;
   for (std::size_t at = text.find("facet normal"); at != std::string::npos;
@@ -190,11 +177,9 @@ TEST(StlBytesAscii, WritesOneFacetBlockPerTriangle) {
 
 TEST(StlBytesAscii, PrintsNineSignificantDigits) {
   const std::string text =
-      stl_bytes(single_triangle({0.1, 0, 0}, {1, 0, 0}, {0, 1, 1e-7}),
-                StlEncoding::Ascii);
+      stl_bytes(single_triangle({0.1, 0, 0}, {1, 0, 0}, {0, 1, 1e-7}), StlEncoding::Ascii);
   EXPECT_NE(text.find("vertex 0.100000001 0 0\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("vertex 0 1 1.00000001e-07\n"), std::string::npos)
-      << text;
+  EXPECT_NE(text.find("vertex 0 1 1.00000001e-07\n"), std::string::npos) << text;
 }
 
 TEST(StlBytesAscii, EveryNumberReadsBackToTheSameFloat) {
@@ -204,11 +189,10 @@ TEST(StlBytesAscii, EveryNumberReadsBackToTheSameFloat) {
   std::size_t f = 0;
   int c = 0;
   while (in >> word) {
-    if (word != "vertex")
-      continue;
+    if (word != "vertex") continue;
     std::string x, y, z;
     in >> x >> y >> z;
-    const Vec3 &p = sphere.triangles[f][c];
+    const Vec3& p = sphere.triangles[f][c];
     EXPECT_EQ(std::strtof(x.c_str(), nullptr), static_cast<float>(p.x));
     EXPECT_EQ(std::strtof(y.c_str(), nullptr), static_cast<float>(p.y));
     EXPECT_EQ(std::strtof(z.c_str(), nullptr), static_cast<float>(p.z));
@@ -263,8 +247,7 @@ TEST_P(WriteStlRoundTrip, NegativeZeroKeepsItsSign) {
 
 TEST_P(WriteStlRoundTrip, DoubleCoordinatesComeBackRoundedToFloat32) {
   TempDir dir;
-  const auto soup =
-      single_triangle({0.1, 0.2, 0.3}, {1.1, 0.2, 0.3}, {0.1, 1.2, 0.3});
+  const auto soup = single_triangle({0.1, 0.2, 0.3}, {1.1, 0.2, 0.3}, {0.1, 1.2, 0.3});
   ASSERT_TRUE(write_stl(dir / "tenths.stl", soup, GetParam()));
   const auto back = read_mesh(dir / "tenths.stl");
   ASSERT_TRUE(back) << back.error().to_string();
@@ -275,8 +258,7 @@ TEST_P(WriteStlRoundTrip, DoubleCoordinatesComeBackRoundedToFloat32) {
 
 TEST_P(WriteStlRoundTrip, KeepsTheFacetOrder) {
   TempDir dir;
-  const auto shuffled =
-      mesh::shuffle_facets(mesh::make_ring(20, 12, 10, 32), 11);
+  const auto shuffled = mesh::shuffle_facets(mesh::make_ring(20, 12, 10, 32), 11);
   ASSERT_TRUE(write_stl(dir / "shuffled.stl", shuffled, GetParam()));
   const auto back = read_mesh(dir / "shuffled.stl");
   ASSERT_TRUE(back) << back.error().to_string();
@@ -284,11 +266,9 @@ TEST_P(WriteStlRoundTrip, KeepsTheFacetOrder) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Encodings, WriteStlRoundTrip,
-                         testing::Values(StlEncoding::Binary,
-                                         StlEncoding::Ascii),
-                         [](const testing::TestParamInfo<StlEncoding> &info) {
-                           return info.param == StlEncoding::Binary ? "Binary"
-                                                                    : "Ascii";
+                         testing::Values(StlEncoding::Binary, StlEncoding::Ascii),
+                         [](const testing::TestParamInfo<StlEncoding>& info) {
+                           return info.param == StlEncoding::Binary ? "Binary" : "Ascii";
                          });
 
 TEST(WriteStl, ReadBackIdentifiesTheEncoding) {
@@ -306,8 +286,7 @@ TEST(WriteStl, ReadBackIdentifiesTheEncoding) {
 TEST(WriteStl, ReadBackRaisesNoWarnings) {
   TempDir dir;
   for (const auto encoding : {StlEncoding::Binary, StlEncoding::Ascii}) {
-    ASSERT_TRUE(
-        write_stl(dir / "ring.stl", mesh::make_ring(20, 12, 10, 32), encoding));
+    ASSERT_TRUE(write_stl(dir / "ring.stl", mesh::make_ring(20, 12, 10, 32), encoding));
     const auto back = read_mesh(dir / "ring.stl");
     ASSERT_TRUE(back) << back.error().to_string();
     EXPECT_TRUE(back->diagnostics.empty()) << back->diagnostics.front().message;
@@ -323,8 +302,7 @@ TEST(WriteStl, FileHoldsExactlyTheStlBytes) {
 
 TEST(WriteStl, WritesModelsLargerThanOneChunkWhole) {
   TempDir dir;
-  const auto ring =
-      mesh::make_ring(20, 12, 10, 8200); // 65600 facets: two write chunks
+  const auto ring = mesh::make_ring(20, 12, 10, 8200);  // 65600 facets: two write chunks
   for (const auto encoding : {StlEncoding::Binary, StlEncoding::Ascii}) {
     ASSERT_TRUE(write_stl(dir / "ring.stl", ring, encoding));
     EXPECT_TRUE(file_bytes(dir / "ring.stl") == stl_bytes(ring, encoding));
@@ -342,7 +320,7 @@ TEST(WriteStl, LeavesOnlyTheFinalFileInTheFolder) {
   TempDir dir;
   ASSERT_TRUE(write_stl(dir / "tet.stl", mesh::make_tetrahedron()));
   std::vector<std::string> names;
-  for (const auto &entry : std::filesystem::directory_iterator(dir.path())) {
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
     names.push_back(entry.path().filename().string());
   }
   EXPECT_EQ(names, std::vector<std::string>{"tet.stl"});
@@ -372,8 +350,7 @@ TEST(WriteStl, RejectsCoordinateBeyondFloat32Range) {
 
 TEST(WriteStl, FailsCleanlyInAMissingFolder) {
   TempDir dir;
-  const auto written =
-      write_stl(dir / "no" / "such" / "tet.stl", mesh::make_tetrahedron());
+  const auto written = write_stl(dir / "no" / "such" / "tet.stl", mesh::make_tetrahedron());
   ASSERT_FALSE(written);
   EXPECT_FALSE(written.error().to_string().empty());
 }
@@ -391,16 +368,14 @@ TEST(WriteStl, ReplacesAnExistingFile) {
 
 /// Largest coordinate difference between two soups of the same size (infinity
 /// otherwise).
-double max_coordinate_difference(const TriangleSoup &a, const TriangleSoup &b) {
-  if (a.triangles.size() != b.triangles.size())
-    return std::numeric_limits<double>::infinity();
+double max_coordinate_difference(const TriangleSoup& a, const TriangleSoup& b) {
+  if (a.triangles.size() != b.triangles.size()) return std::numeric_limits<double>::infinity();
   double worst = 0;
   for (std::size_t f = 0; f < a.triangles.size(); ++f) {
     for (int c = 0; c < 3; ++c) {
-      const Vec3 &p = a.triangles[f][c];
-      const Vec3 &q = b.triangles[f][c];
-      worst = std::max({worst, std::abs(p.x - q.x), std::abs(p.y - q.y),
-                        std::abs(p.z - q.z)});
+      const Vec3& p = a.triangles[f][c];
+      const Vec3& q = b.triangles[f][c];
+      worst = std::max({worst, std::abs(p.x - q.x), std::abs(p.y - q.y), std::abs(p.z - q.z)});
     }
   }
   return worst;
@@ -408,7 +383,7 @@ double max_coordinate_difference(const TriangleSoup &a, const TriangleSoup &b) {
 
 TEST(SampleData, TetrahedronFilesHoldTheGeneratedTetrahedron) {
   const std::filesystem::path data = STRATA_DATA_DIR;
-  for (const char *name : {"tetrahedron.stl", "tetrahedron_ascii.stl"}) {
+  for (const char* name : {"tetrahedron.stl", "tetrahedron_ascii.stl"}) {
     const auto read = read_mesh(data / name);
     ASSERT_TRUE(read) << read.error().to_string();
     EXPECT_EQ(bit_difference(*read, mesh::make_tetrahedron()), "") << name;
@@ -423,10 +398,9 @@ TEST(SampleData, RingAndSphereFilesHoldTheGeneratedModels) {
   ASSERT_TRUE(sphere) << sphere.error().to_string();
   // Corners come from sin/cos; allow one float32 step (at 20 mm: 1.9e-6) for
   // another libm.
-  EXPECT_LE(max_coordinate_difference(*ring, mesh::make_ring(20, 12, 10, 128)),
-            2e-6);
+  EXPECT_LE(max_coordinate_difference(*ring, mesh::make_ring(20, 12, 10, 128)), 2e-6);
   EXPECT_LE(max_coordinate_difference(*sphere, mesh::make_sphere(10, 4)), 1e-6);
 }
 
-} // namespace
-} // namespace strata::io
+}  // namespace
+}  // namespace strata::io
