@@ -14,6 +14,20 @@
 
 namespace strata::io::detail {
 
+/// Spaces and tabs that separate tokens on a line of a text mesh format.
+constexpr bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+
+/// Splits off the next blank-separated token of `rest` (empty at the end of the line).
+inline std::string_view next_token(std::string_view& rest) {
+  std::size_t i = 0;
+  while (i < rest.size() && is_blank(rest[i])) ++i;
+  std::size_t j = i;
+  while (j < rest.size() && !is_blank(rest[j])) ++j;
+  const std::string_view token = rest.substr(i, j - i);
+  rest.remove_prefix(j);
+  return token;
+}
+
 /// Collects repeated warnings of one kind into a single Diagnostic: the first occurrence's
 /// message, a count and the first few further places, so that a file with 10^6 odd normals
 /// yields one line, not 10^6.

@@ -27,8 +27,6 @@
 namespace strata::io::detail {
 namespace {
 
-constexpr bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
-
 /// Tokens of the text with their line numbers; `#` starts a comment to the end of the line.
 class OffTokens {
  public:

@@ -79,18 +79,6 @@ struct PlyHeader {
   std::size_t body_line = 0;    ///< line number of that byte (ASCII)
 };
 
-constexpr bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
-
-std::string_view next_token(std::string_view& rest) {
-  std::size_t i = 0;
-  while (i < rest.size() && is_blank(rest[i])) ++i;
-  std::size_t j = i;
-  while (j < rest.size() && !is_blank(rest[j])) ++j;
-  const std::string_view token = rest.substr(i, j - i);
-  rest.remove_prefix(j);
-  return token;
-}
-
 Error error_at(std::string location, std::string message) {
   return Error{ErrorCode::BadInput, std::move(message), std::move(location)};
 }

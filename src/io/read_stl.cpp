@@ -22,6 +22,9 @@
 namespace strata::io {
 namespace {
 
+using detail::is_blank;
+using detail::next_token;
+
 using detail::DiagnosticTally;
 using detail::kStlBinaryFacetBytes;
 using detail::kStlBinaryHeaderBytes;
@@ -155,19 +158,6 @@ Error binary_size_error(std::string_view bytes, std::string_view name,
 
 // ---------------------------------------------------------------------------------------------
 // ASCII
-
-constexpr bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
-
-/// Splits off the next whitespace-separated token of `rest`.
-std::string_view next_token(std::string_view& rest) {
-  std::size_t i = 0;
-  while (i < rest.size() && is_blank(rest[i])) ++i;
-  std::size_t j = i;
-  while (j < rest.size() && !is_blank(rest[j])) ++j;
-  const std::string_view token = rest.substr(i, j - i);
-  rest.remove_prefix(j);
-  return token;
-}
 
 std::string_view trim(std::string_view text) {
   while (!text.empty() && is_blank(text.front())) text.remove_prefix(1);
