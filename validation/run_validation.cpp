@@ -1,13 +1,14 @@
 // strata-validation: cross-validates the fast path against the exact path on the generated
 // degenerate models and on the shared mesh corpus, and writes a Markdown report.
 //
-//   strata-validation [--quick] [--corpus DIR] [--max-bytes N] [--max-cells N]
+//   strata-validation [--quick] [--only TEXT] [--corpus DIR] [--max-bytes N] [--max-cells N]
 //                     [--max-layers N] [--out FILE] [--write-models DIR] [--strict]
 //
 // Every model is validated under the nonzero and evenodd fill rules on two grids: one aligned
 // with the model's features and one that is not. Exit codes: 0 every cell agrees, 4 some cell
 // differs, 3 (with --strict) a path failed or refused a model, 2 bad usage, 1 the report could
-// not be written.
+// not be written. Closed 2-manifolds are also sliced by CGAL's Polygon_mesh_slicer (exact
+// kernel), whose contours are compared with both paths'.
 
 #include <fmt/format.h>
 
@@ -46,17 +47,22 @@ using strata::GridSpec;
 using strata::SliceOptions;
 using strata::validate::DifferenceReason;
 using strata::validate::kDifferenceReasonCount;
+using strata::validate::ReferenceSkip;
 using strata::validate::ValidationReport;
 
 constexpr const char* kUsage =
-    "usage: strata-validation [--quick] [--corpus DIR] [--max-bytes N] [--max-cells N]\n"
-    "                         [--max-layers N] [--out FILE] [--write-models DIR] [--strict]\n"
+    "usage: strata-validation [--quick] [--only TEXT] [--corpus DIR] [--max-bytes N]\n"
+    "                         [--max-cells N] [--max-layers N] [--out FILE]\n"
+    "                         [--write-models DIR] [--strict]\n"
     "\n"
     "Validates the fast slicing path against the exact (CGAL) path on the generated degenerate\n"
     "models and on every STL/OBJ/OFF/PLY mesh (also .gz) of the corpus, each under the nonzero\n"
     "and evenodd fill rules on an aligned and a shifted grid, and writes a Markdown report.\n"
+    "Closed 2-manifolds (up to 200000 facets) are also sliced by CGAL's Polygon_mesh_slicer\n"
+    "with the exact kernel, and its contours compared with both paths'.\n"
     "\n"
     "  --quick            generated models and about 10 small corpus files only\n"
+    "  --only TEXT        only the models whose name contains TEXT (repeatable)\n"
     "  --corpus DIR       corpus folder with MANIFEST.tsv (default: ../shared/corpus)\n"
     "  --max-bytes N      skip corpus files larger than N bytes (default 5000000)\n"
     "  --max-cells N      cells per run at most, about (default 1000000)\n"
@@ -77,6 +83,7 @@ struct RunnerOptions {
   fs::path out = fs::path(STRATA_VALIDATION_DIR) / "REPORT.md";
   fs::path write_models;
   bool strict = false;
+  std::vector<std::string> only;
 };
 
 constexpr std::size_t kQuickCorpusFiles = 10;
@@ -128,6 +135,22 @@ struct RunRecord {
   std::optional<double> surface_to_boundary_mm;
   double shell_min_mm = 0.0;
   double asked_shell_mm = 0.0;
+  // The reference slicer (CGAL Polygon_mesh_slicer), over the layers whose plane holds no
+  // vertex unless said otherwise.
+  bool ref_ran = false;
+  ReferenceSkip ref_skipped = ReferenceSkip::Off;
+  std::string ref_reason;
+  std::uint32_t ref_layers = 0;
+  std::uint32_t ref_layers_at_vertex = 0;
+  /// Layers whose regions differ from a path's (symmetric difference above the tolerance).
+  std::uint32_t ref_differing = 0;
+  /// Layers whose plane holds a vertex and whose contours differ from either path's.
+  std::uint32_t ref_differing_at_vertex = 0;
+  double ref_hausdorff_exact_mm = 0.0;
+  double ref_hausdorff_fast_mm = 0.0;
+  double ref_symmetric_difference_mm2 = 0.0;  ///< the larger of vs exact and vs fast
+  std::uint64_t ref_open_polylines = 0;
+  double ref_seconds = 0.0;
 };
 
 struct ModelRecord {
@@ -308,6 +331,24 @@ RunRecord run_one(const strata::IndexedMesh& mesh, const std::string& grid_name,
   r.surface_to_boundary_mm = v.model.surface_to_boundary_mm;
   r.shell_min_mm = v.model.shell.min_mm;
   r.asked_shell_mm = v.model.asked_shell_mm;
+  const strata::validate::ReferenceSlicerFigures& ref = v.reference;
+  r.ref_ran = ref.ran;
+  r.ref_skipped = ref.skipped;
+  r.ref_reason = ref.reason;
+  r.ref_layers = ref.layers_compared;
+  r.ref_layers_at_vertex = ref.layers_vertex_on_plane;
+  for (const strata::validate::ReferenceLayerComparison& l : ref.layers) {
+    if (l.vertex_on_plane() && (l.differs_from_exact || l.differs_from_fast)) {
+      ++r.ref_differing_at_vertex;
+    }
+  }
+  r.ref_differing = std::max(ref.layers_region_differing_exact, ref.layers_region_differing_fast);
+  r.ref_hausdorff_exact_mm = ref.max_hausdorff_exact_mm;
+  r.ref_hausdorff_fast_mm = ref.max_hausdorff_fast_mm;
+  r.ref_symmetric_difference_mm2 =
+      std::max(ref.max_symmetric_difference_exact_mm2, ref.max_symmetric_difference_fast_mm2);
+  r.ref_open_polylines = ref.open_polylines;
+  r.ref_seconds = ref.seconds();
   return r;
 }
 
@@ -391,6 +432,12 @@ std::string make_report(const std::vector<ModelRecord>& records,
   std::uint64_t overlaid = 0, overlay_skipped = 0, area_only = 0;
   double max_hausdorff = 0.0;
   std::map<std::string, std::vector<std::string>> refusal_reasons;
+  // The reference slicer.
+  std::uint64_t ref_models = 0, ref_runs = 0, ref_layers = 0, ref_layers_at_vertex = 0,
+                ref_differing = 0, ref_differing_at_vertex = 0, ref_open = 0;
+  double ref_h_exact = 0.0, ref_h_fast = 0.0, ref_area = 0.0, ref_s = 0.0, ref_worst = 0.0;
+  std::string ref_worst_model;
+  std::map<std::string, std::uint64_t> ref_skipped_models;
   for (const ModelRecord& m : records) {
     if (m.read_error) {
       ++unreadable;
@@ -398,6 +445,31 @@ std::string make_report(const std::vector<ModelRecord>& records,
     }
     ++models;
     if (m.model.source == "generated") ++generated;
+    bool ref_any = false;
+    for (const RunRecord& r : m.runs) {
+      ref_s += r.ref_seconds;
+      if (!r.ref_ran && r.ref_layers == 0) continue;
+      ref_any = true;
+      ++ref_runs;
+      ref_layers += r.ref_layers;
+      ref_layers_at_vertex += r.ref_layers_at_vertex;
+      ref_differing += r.ref_differing;
+      ref_differing_at_vertex += r.ref_differing_at_vertex;
+      ref_open += r.ref_open_polylines;
+      const double h = std::max(r.ref_hausdorff_exact_mm, r.ref_hausdorff_fast_mm);
+      if (h > ref_worst) {
+        ref_worst = h;
+        ref_worst_model = m.model.name;
+      }
+      ref_h_exact = std::max(ref_h_exact, r.ref_hausdorff_exact_mm);
+      ref_h_fast = std::max(ref_h_fast, r.ref_hausdorff_fast_mm);
+      ref_area = std::max(ref_area, r.ref_symmetric_difference_mm2);
+    }
+    if (ref_any) {
+      ++ref_models;
+    } else if (!m.runs.empty()) {
+      ++ref_skipped_models[strata::validate::to_string(m.runs.front().ref_skipped)];
+    }
     for (const RunRecord& r : m.runs) {
       ++runs;
       compared += r.cells_compared;
@@ -422,6 +494,8 @@ std::string make_report(const std::vector<ModelRecord>& records,
     }
   }
 
+  std::string invocation = o.quick ? " --quick" : "";
+  for (const std::string& text : o.only) invocation += " --only " + text;
   std::string out;
   out += "# strata cross-validation: fast path vs exact path\n\n";
   const std::time_t now = std::time(nullptr);
@@ -436,7 +510,7 @@ std::string make_report(const std::vector<ModelRecord>& records,
       "for corpus models, and an origin moved by odd fractions of a cell). At most about {} "
       "cells and {} layers a run; shell thickness {} cells (distance mode); scan offset 0. "
       "Corpus files over {} bytes are skipped. How to run it: `validation/README.md`.\n\n",
-      o.quick ? " --quick" : "", date, wall_seconds, kOddCellFactor,
+      invocation, date, wall_seconds, kOddCellFactor,
       thousands(static_cast<std::uint64_t>(o.max_cells)), o.max_layers, kShellCells,
       thousands(o.max_bytes));
 
@@ -467,6 +541,24 @@ std::string make_report(const std::vector<ModelRecord>& records,
   out += fmt::format("| exact / fast time ratio | {} |\n",
                      fast_s > 0 ? fmt::format("{:.1f}", exact_s / fast_s) : std::string("n/a"));
   out += fmt::format("| time comparing and measuring | {:.1f} s |\n", comparison_s);
+  {
+    std::vector<std::string> skipped;
+    for (const auto& [why, n] : ref_skipped_models) skipped.push_back(fmt::format("{} {}", why, n));
+    out += fmt::format(
+        "| reference slicer (CGAL Polygon_mesh_slicer, exact kernel) | {} of {} models compared "
+        "({} runs, {} layers); where the plane holds no mesh vertex: worst Hausdorff distance "
+        "vs exact {} mm, vs fast {} mm{}, worst symmetric difference {} mm2, {} layers "
+        "whose regions differ; {} layers whose plane holds a vertex, {} of them differing (CGAL "
+        "keeps "
+        "such a vertex on the plane, strata counts it above); {} open polylines; not run: {}; "
+        "{:.1f} s |\n",
+        ref_models, models, ref_runs, thousands(ref_layers), mm(ref_h_exact), mm(ref_h_fast),
+        ref_worst_model.empty() ? std::string()
+                                : fmt::format(" (`{}`)", cell_text(ref_worst_model, 60)),
+        mm(ref_area), ref_differing, thousands(ref_layers_at_vertex), ref_differing_at_vertex,
+        ref_open,
+        skipped.empty() ? std::string("none") : fmt::format("{}", fmt::join(skipped, ", ")), ref_s);
+  }
   out += fmt::format("| corpus files skipped (over {} bytes) | {} |\n", thousands(o.max_bytes),
                      too_large.size());
   out += fmt::format("| files that could not be read | {} |\n\n", unreadable);
@@ -525,18 +617,33 @@ std::string make_report(const std::vector<ModelRecord>& records,
       "(against its magnitude), and the exact path's contours (sum of the layers' net signed "
       "areas x dz, so an inverted shell counts negative, like the mesh volume). These are "
       "discretisation errors of coarse grids, not disagreements. Times: summed over the "
-      "runs.\n\n";
+      "runs. ref Hausdorff: CGAL's Polygon_mesh_slicer (exact kernel) on closed, consistently "
+      "oriented 2-manifolds, the largest Hausdorff distance of its contours to the exact "
+      "path's / the fast path's over the layers whose plane holds no mesh vertex (mm), with "
+      "the number of layers whose plane holds a vertex and differ there (legitimately: CGAL "
+      "keeps a vertex on the plane, strata counts it above); otherwise why it did not run.\n\n";
   out +=
       "| model | defects | facets | cells compared | differing | Hausdorff mm | sym. diff. mm2 | "
-      "cells vol. | contours vol. (exact) | fast s | exact s | notes |\n";
-  out += "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+      "ref Hausdorff mm | cells vol. | contours vol. (exact) | fast s | exact s | notes |\n";
+  out += "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const ModelRecord& m : records) {
     if (m.read_error) continue;
     std::uint64_t c = 0, d = 0;
     double h = 0.0, area = 0.0, fs_ = 0.0, es = 0.0;
     std::uint32_t open_layers = 0, area_only = 0;
     std::set<std::string> notes;
+    bool ref_ran = false;
+    double ref_he = 0.0, ref_hf = 0.0;
+    std::uint32_t ref_vertex_differ = 0, ref_generic_differ = 0;
     for (const RunRecord& r : m.runs) {
+      if (r.ref_ran || r.ref_layers > 0) {
+        ref_ran = true;
+        ref_he = std::max(ref_he, r.ref_hausdorff_exact_mm);
+        ref_hf = std::max(ref_hf, r.ref_hausdorff_fast_mm);
+        ref_vertex_differ += r.ref_differing_at_vertex;
+        ref_generic_differ += r.ref_differing;
+      }
+      if (r.ref_skipped == ReferenceSkip::Failed) notes.insert("reference: " + r.ref_reason);
       c += r.cells_compared;
       d += r.cells_differing;
       h = std::max(h, r.max_hausdorff_mm);
@@ -558,12 +665,23 @@ std::string make_report(const std::vector<ModelRecord>& records,
       cells_vol = percent(a.fast_cell_volume_mm3, std::fabs(a.mesh_volume_mm3));
       if (a.exact_ran) contour_vol = percent(a.exact_contour_volume_mm3, a.mesh_volume_mm3);
     }
+    std::string ref_text;
+    if (ref_ran) {
+      ref_text = fmt::format("{} / {}", mm(ref_he), mm(ref_hf));
+      if (ref_generic_differ > 0)
+        ref_text += fmt::format(", **regions differ in {} layers**", ref_generic_differ);
+      if (ref_vertex_differ > 0) ref_text += fmt::format(", {} at a vertex", ref_vertex_differ);
+    } else if (!m.runs.empty()) {
+      ref_text =
+          fmt::format("not run: {}", strata::validate::to_string(m.runs.front().ref_skipped));
+    }
     std::string note_text;
     for (const std::string& n : notes) note_text += (note_text.empty() ? "" : "; ") + n;
-    out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.2f} | {:.2f} | {} |\n",
-                       cell_text(m.model.name, 70), cell_text(m.model.defects, 110),
-                       thousands(m.facets), thousands(c), d > 0 ? fmt::format("**{}**", d) : "0",
-                       mm(h), mm(area), cells_vol, contour_vol, fs_, es, cell_text(note_text, 160));
+    out += fmt::format(
+        "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.2f} | {:.2f} | {} |\n",
+        cell_text(m.model.name, 70), cell_text(m.model.defects, 110), thousands(m.facets),
+        thousands(c), d > 0 ? fmt::format("**{}**", d) : "0", mm(h), mm(area), ref_text, cells_vol,
+        contour_vol, fs_, es, cell_text(note_text, 160));
   }
   out += "\n";
 
@@ -611,6 +729,10 @@ int main(int argc, char** argv) {
       o.quick = true;
     } else if (arg == "--strict") {
       o.strict = true;
+    } else if (arg == "--only") {
+      const char* v = value();
+      if (!v) return 2;
+      o.only.emplace_back(v);
     } else if (arg == "--corpus") {
       const char* v = value();
       if (!v) return 2;
@@ -694,6 +816,14 @@ int main(int argc, char** argv) {
     const fs::path full = o.corpus / row.path;
     cases.push_back({row.path, "corpus", row.defects, row.bytes,
                      [full]() { return strata::io::read_mesh(full); }, std::nullopt});
+  }
+
+  if (!o.only.empty()) {
+    std::erase_if(cases, [&](const ModelCase& c) {
+      return std::none_of(o.only.begin(), o.only.end(), [&](const std::string& text) {
+        return c.name.find(text) != std::string::npos;
+      });
+    });
   }
 
   std::vector<ModelRecord> records;

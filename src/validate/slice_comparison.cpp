@@ -17,6 +17,7 @@
 #include "strata/slice/slice_float.hpp"
 #include "strata/validate/contour_metrics.hpp"
 #include "validate/bucket_grid_internal.hpp"
+#include "validate/model_scale_internal.hpp"
 
 namespace strata::validate {
 
@@ -149,15 +150,7 @@ const char* to_string(AreaMethod method) {
 struct SliceComparison::State {
   State(const IndexedMesh& m, const GridSpec& g, const SliceOptions& o, const ValidateOptions& v)
       : mesh(m), grid(g), options(o), vopts(v), rng(kShellSampleSeed) {
-    const Bbox3 bounds = mesh.bounds();
-    double scale = 0.0;
-    if (!bounds.empty()) {
-      scale = std::max({std::fabs(bounds.min.x), std::fabs(bounds.min.y), std::fabs(bounds.min.z),
-                        std::fabs(bounds.max.x), std::fabs(bounds.max.y), std::fabs(bounds.max.z),
-                        std::hypot(bounds.max.x - bounds.min.x, bounds.max.y - bounds.min.y,
-                                   bounds.max.z - bounds.min.z)});
-    }
-    tolerance = vopts.near_tie_relative * scale;
+    tolerance = vopts.near_tie_relative * detail::coordinate_scale(mesh.bounds());
     report.grid = grid;
     report.options = options;
     offset_cells.resize(grid.nz);

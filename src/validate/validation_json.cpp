@@ -63,6 +63,63 @@ double relative(double value, double reference) {
                           : std::numeric_limits<double>::quiet_NaN();
 }
 
+json reference_json(const ReferenceSlicerFigures& f) {
+  json layers = json::array();
+  for (const ReferenceLayerComparison& l : f.layers) {
+    layers.push_back({{"k", l.layer},
+                      {"z_mm", l.z_mm},
+                      {"closed_polylines", l.closed_polylines},
+                      {"open_polylines", l.open_polylines},
+                      {"isolated_points", l.isolated_points},
+                      {"open_after_joining", l.open_after_joining},
+                      {"vertices_on_plane", l.vertices_on_plane},
+                      {"facet_on_plane", l.facet_on_plane},
+                      {"hausdorff_exact_mm", number(l.hausdorff_exact_mm)},
+                      {"hausdorff_fast_mm", number(l.hausdorff_fast_mm)},
+                      {"symmetric_difference_exact_mm2", number(l.symmetric_difference_exact_mm2)},
+                      {"symmetric_difference_fast_mm2", number(l.symmetric_difference_fast_mm2)},
+                      {"area_method_exact", to_string(l.area_method_exact)},
+                      {"area_method_fast", to_string(l.area_method_fast)},
+                      {"differs_from_exact", l.differs_from_exact},
+                      {"differs_from_fast", l.differs_from_fast}});
+  }
+  return {{"ran", f.ran},
+          {"skipped", to_string(f.skipped)},
+          {"reason", f.reason.empty() ? json(nullptr) : json(f.reason)},
+          {"facets", f.facets},
+          {"max_facets", f.max_facets},
+          {"degenerate_facets_dropped", f.degenerate_facets_dropped},
+          {"layers_compared", f.layers_compared},
+          {"layers_vertex_on_plane", f.layers_vertex_on_plane},
+          {"layers_facet_on_plane", f.layers_facet_on_plane},
+          {"layers_differing_exact", f.layers_differing_exact},
+          {"layers_differing_fast", f.layers_differing_fast},
+          {"layers_differing_exact_at_vertex", f.layers_differing_exact_at_vertex},
+          {"layers_differing_fast_at_vertex", f.layers_differing_fast_at_vertex},
+          {"layers_region_differing_exact", f.layers_region_differing_exact},
+          {"layers_region_differing_fast", f.layers_region_differing_fast},
+          {"layers_overlay_skipped", f.layers_overlay_skipped},
+          {"polylines", f.polylines},
+          {"open_polylines", f.open_polylines},
+          {"isolated_points", f.isolated_points},
+          {"open_after_joining", f.open_after_joining},
+          {"max_hausdorff_exact_mm", number(f.max_hausdorff_exact_mm)},
+          {"max_hausdorff_fast_mm", number(f.max_hausdorff_fast_mm)},
+          {"max_symmetric_difference_exact_mm2", number(f.max_symmetric_difference_exact_mm2)},
+          {"max_symmetric_difference_fast_mm2", number(f.max_symmetric_difference_fast_mm2)},
+          {"max_hausdorff_exact_all_layers_mm", number(f.max_hausdorff_exact_all_mm)},
+          {"max_hausdorff_fast_all_layers_mm", number(f.max_hausdorff_fast_all_mm)},
+          {"max_symmetric_difference_exact_all_layers_mm2",
+           number(f.max_symmetric_difference_exact_all_mm2)},
+          {"max_symmetric_difference_fast_all_layers_mm2",
+           number(f.max_symmetric_difference_fast_all_mm2)},
+          {"seconds", f.seconds()},
+          {"build_seconds", f.build_seconds},
+          {"slice_seconds", f.slice_seconds},
+          {"compare_seconds", f.compare_seconds},
+          {"layers", layers}};
+}
+
 }  // namespace
 
 std::string validation_json(const ValidationReport& r) {
@@ -173,6 +230,7 @@ std::string validation_json(const ValidationReport& r) {
         {"min_mm", m.shell.measured ? number(m.shell.min_mm) : json(nullptr)},
         {"mean_mm", m.shell.measured ? number(m.shell.mean_mm) : json(nullptr)},
         {"max_mm", m.shell.measured ? number(m.shell.max_mm) : json(nullptr)}}}};
+  out["reference_slicer"] = reference_json(r.reference);
   out["comparison_seconds"] = r.comparison_seconds;
   json diagnostics = json::array();
   for (const Diagnostic& d : r.diagnostics) {

@@ -50,6 +50,60 @@ std::string box_text(const Bbox3& b) {
                      mm(b.max.x), mm(b.max.y), mm(b.max.z));
 }
 
+std::string reference_text(const ReferenceSlicerFigures& f) {
+  constexpr const char* kTitle = "slicer (CGAL Polygon_mesh_slicer, exact kernel)";
+  if (!f.ran && f.layers_compared == 0) {
+    if (f.skipped == ReferenceSkip::Off) return fmt::format("reference {}: off\n", kTitle);
+    return fmt::format("reference {}: not run: {}\n", kTitle, f.reason);
+  }
+  std::string out;
+  const std::uint32_t generic = f.layers_compared - f.layers_vertex_on_plane;
+  out += fmt::format(
+      "reference {}: {} layers; where the plane contains no vertex ({} layers): vs exact "
+      "Hausdorff max {} mm, symmetric difference max {} mm2; vs fast Hausdorff max {} mm, "
+      "symmetric difference max {} mm2; contours differ in {} layers from the exact path "
+      "(regions in {}), {} from the fast path (regions in {})\n",
+      kTitle, f.layers_compared, generic, mm(f.max_hausdorff_exact_mm),
+      mm(f.max_symmetric_difference_exact_mm2), mm(f.max_hausdorff_fast_mm),
+      mm(f.max_symmetric_difference_fast_mm2), f.layers_differing_exact,
+      f.layers_region_differing_exact, f.layers_differing_fast, f.layers_region_differing_fast);
+  if (f.layers_differing_exact + f.layers_differing_fast >
+      f.layers_region_differing_exact + f.layers_region_differing_fast) {
+    out +=
+        "          (contours that differ around the same region: where loops cross or touch, a "
+        "path may give the outline of the region instead of the loops the slicer gives)\n";
+  }
+  if (f.layers_vertex_on_plane > 0) {
+    out += fmt::format(
+        "          the plane contains a mesh vertex in {} layers{} (CGAL keeps such a vertex on "
+        "the plane, strata counts it above): contours differ there in {} layers from the exact "
+        "path, {} from the fast path; over every layer: vs exact Hausdorff max {} mm, "
+        "symmetric difference max {} mm2; vs fast {} mm, {} mm2\n",
+        f.layers_vertex_on_plane,
+        f.layers_facet_on_plane > 0
+            ? fmt::format(" (a facet lies in it in {})", f.layers_facet_on_plane)
+            : std::string(),
+        f.layers_differing_exact_at_vertex, f.layers_differing_fast_at_vertex,
+        mm(f.max_hausdorff_exact_all_mm), mm(f.max_symmetric_difference_exact_all_mm2),
+        mm(f.max_hausdorff_fast_all_mm), mm(f.max_symmetric_difference_fast_all_mm2));
+  } else {
+    out += "          the plane contains no mesh vertex in any layer\n";
+  }
+  out += fmt::format(
+      "          {} polylines: {} open ({} still open after joining them at shared points), {} "
+      "single points{}\n",
+      thousands(f.polylines), thousands(f.open_polylines), thousands(f.open_after_joining),
+      thousands(f.isolated_points),
+      f.degenerate_facets_dropped > 0
+          ? fmt::format("; {} facets with a repeated corner left out", f.degenerate_facets_dropped)
+          : std::string());
+  if (f.skipped == ReferenceSkip::Failed) out += fmt::format("          stopped: {}\n", f.reason);
+  out += fmt::format(
+      "          time {:.3f} s: building {:.3f} s, slicing {:.3f} s, comparing {:.3f} s\n",
+      f.seconds(), f.build_seconds, f.slice_seconds, f.compare_seconds);
+  return out;
+}
+
 }  // namespace
 
 std::string validation_text(const ValidationReport& r) {
@@ -143,6 +197,8 @@ std::string validation_text(const ValidationReport& r) {
           l.cells_differing);
     }
   }
+
+  out += reference_text(r.reference);
 
   // Model.
   const ModelFigures& m = r.model;

@@ -18,6 +18,11 @@ namespace strata::validate {
 /// they meet (SliceComparison). When options.scan_offset_mm is not 0, the fast path is first run
 /// with the offset and with offset 0 in the same way, to list the cells the offset changes.
 ///
+/// When validate_options.reference_slicer is on and the mesh is a closed, consistently oriented
+/// 2-manifold (at most reference_max_facets facets), CGAL's Polygon_mesh_slicer with the exact
+/// kernel also cuts every layer's plane, and its contours are compared with both paths' as the
+/// layer pairs meet (ValidationReport::reference; its time is its own, counted in neither path).
+///
 /// @param mesh  the welded mesh both paths slice
 /// @param grid  the grid of both paths (make_grid)
 /// @return the report; when the exact path refuses the model or fails, the report says why in

@@ -41,6 +41,11 @@ struct ValidateOptions {
   /// this many layers spread evenly over the grid; the others are marked
   /// AreaMethod::NotCompared. Layers with larger differences are always overlaid.
   std::uint32_t max_overlay_layers = 0;
+  /// Also slice with CGAL's Polygon_mesh_slicer (exact kernel) and compare its contours with
+  /// both paths' (ReferenceSlicerFigures), when the mesh is a closed, consistently oriented
+  /// 2-manifold with at most reference_max_facets facets.
+  bool reference_slicer = true;
+  std::size_t reference_max_facets = 200'000;
   /// Layers a path may run ahead of the other before it waits (0: chosen from the layer size).
   std::uint32_t window_layers = 0;
   /// Told the layers compared so far out of nz (called from the slicing threads, one at a time).

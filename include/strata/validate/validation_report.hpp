@@ -165,6 +165,119 @@ struct ScanOffsetFigures {
   std::vector<OffsetChange> cells;  ///< the first ValidateOptions::max_listed_cells
 };
 
+/// Why the reference slicer (ReferenceSlicerFigures) did not run.
+enum class ReferenceSkip : std::uint8_t {
+  None,           ///< it ran
+  Off,            ///< turned off (ValidateOptions::reference_slicer)
+  TooManyFacets,  ///< more facets than ValidateOptions::reference_max_facets
+  Empty,          ///< no facet left
+  NonManifold,    ///< edges or vertices shared in a way a 2-manifold cannot share them
+  Inconsistent,   ///< a 2-manifold, but neighbouring facets are oriented against each other
+  NotClosed,      ///< a 2-manifold with border edges
+  Failed,         ///< CGAL raised an error while building or slicing
+};
+
+/// "none", "off", "too-many-facets", "empty", "non-manifold", "inconsistent-orientation",
+/// "not-closed" or "failed".
+const char* to_string(ReferenceSkip skip);
+
+/// The reference slicer against both paths in one layer.
+struct ReferenceLayerComparison {
+  std::uint32_t layer = 0;
+  double z_mm = 0.0;
+  /// Polylines CGAL returned: closed ones (first point == last point), open ones, and single
+  /// points (the plane touches the mesh at a vertex only).
+  std::uint32_t closed_polylines = 0;
+  std::uint32_t open_polylines = 0;
+  std::uint32_t isolated_points = 0;
+  /// Open polylines that are still open after joining them end to start at shared points (CGAL
+  /// splits its polylines at vertices on the plane where more than two of them meet).
+  std::uint32_t open_after_joining = 0;
+  /// Mesh vertices exactly on the plane z = z_mm, and whether a facet lies in it.
+  std::uint32_t vertices_on_plane = 0;
+  bool facet_on_plane = false;
+  /// Hausdorff distance (mm) and area of the symmetric difference of the regions under the fill
+  /// rule (mm²), reference vs exact path and reference vs fast path. NaN when that path did not
+  /// deliver the layer.
+  double hausdorff_exact_mm = 0.0;
+  double hausdorff_fast_mm = 0.0;
+  double symmetric_difference_exact_mm2 = 0.0;
+  double symmetric_difference_fast_mm2 = 0.0;
+  AreaMethod area_method_exact = AreaMethod::Identical;
+  AreaMethod area_method_fast = AreaMethod::Identical;
+  /// The contours differ beyond the near-tie tolerance: Hausdorff distance above
+  /// ValidateOptions::near_tie_relative times the model's scale, or a symmetric difference above
+  /// that tolerance times the scale.
+  bool differs_from_exact = false;
+  bool differs_from_fast = false;
+
+  bool vertex_on_plane() const { return vertices_on_plane > 0; }
+};
+
+/// An independent opinion on the contours: for a mesh that is a closed, consistently oriented
+/// 2-manifold, the sections of CGAL's Polygon_mesh_slicer over a CGAL::Surface_mesh with the
+/// exact kernel (Epeck), at every layer's plane z = zk, compared with both paths.
+///
+/// CGAL's slicer keeps a vertex on the plane on the plane (the polyline passes through it, a
+/// vertex that only touches the plane gives a single point) and returns the boundary of facets
+/// lying in the plane, where strata counts a vertex on the plane as above it (SPEC §2): in layers
+/// whose plane contains a vertex the two may legitimately differ by such zero-area pieces or,
+/// where a facet lies in the plane with the material above it, by that facet. The figures
+/// therefore come twice: over the layers whose plane contains no mesh vertex (there, the
+/// sections are the same exact points and must agree) and over every layer.
+struct ReferenceSlicerFigures {
+  bool ran = false;
+  ReferenceSkip skipped = ReferenceSkip::Off;
+  std::string reason;  ///< why it did not run (or stopped), for people; empty when it ran
+  std::uint64_t facets = 0;
+  std::uint64_t max_facets = 0;  ///< the cap it was given
+  /// Facets with a repeated corner (a welded needle or point) left out of the Surface_mesh: they
+  /// bound nothing.
+  std::uint64_t degenerate_facets_dropped = 0;
+
+  std::uint32_t layers_compared = 0;  ///< layers sliced and compared with at least one path
+  std::uint32_t layers_vertex_on_plane = 0;
+  std::uint32_t layers_facet_on_plane = 0;  ///< of those, layers where a facet lies in the plane
+  /// Layers whose plane contains no vertex and whose contours differ from the path's (the goal
+  /// is 0), and layers whose plane contains a vertex and whose contours differ (legitimate, see
+  /// above).
+  std::uint32_t layers_differing_exact = 0;
+  std::uint32_t layers_differing_fast = 0;
+  std::uint32_t layers_differing_exact_at_vertex = 0;
+  std::uint32_t layers_differing_fast_at_vertex = 0;
+  /// Of the layers whose plane contains no vertex, those whose regions differ (symmetric
+  /// difference above the tolerance): contours may differ while bounding the same region, where
+  /// a path gives the outline of crossing or touching loops.
+  std::uint32_t layers_region_differing_exact = 0;
+  std::uint32_t layers_region_differing_fast = 0;
+  /// Layers whose overlay was skipped (they differ at rounding level only; see
+  /// ValidateOptions::max_overlay_layers).
+  std::uint32_t layers_overlay_skipped = 0;
+
+  std::uint64_t polylines = 0;
+  std::uint64_t open_polylines = 0;
+  std::uint64_t isolated_points = 0;
+  std::uint64_t open_after_joining = 0;
+
+  /// Over the layers whose plane contains no vertex.
+  double max_hausdorff_exact_mm = 0.0;
+  double max_hausdorff_fast_mm = 0.0;
+  double max_symmetric_difference_exact_mm2 = 0.0;
+  double max_symmetric_difference_fast_mm2 = 0.0;
+  /// Over every layer.
+  double max_hausdorff_exact_all_mm = 0.0;
+  double max_hausdorff_fast_all_mm = 0.0;
+  double max_symmetric_difference_exact_all_mm2 = 0.0;
+  double max_symmetric_difference_fast_all_mm2 = 0.0;
+
+  double build_seconds = 0.0;  ///< checking the mesh, building the Surface_mesh and AABB tree
+  double slice_seconds = 0.0;  ///< slicing every layer and rounding the points
+  double compare_seconds = 0.0;
+  double seconds() const { return build_seconds + slice_seconds + compare_seconds; }
+
+  std::vector<ReferenceLayerComparison> layers;  ///< the compared layers, in order
+};
+
 /// The result of validate_model (SPEC §5): fast path vs exact path on one grid.
 struct ValidationReport {
   GridSpec grid;
@@ -202,6 +315,8 @@ struct ValidationReport {
 
   ScanOffsetFigures scan_offset;
   ModelFigures model;
+  /// CGAL's Polygon_mesh_slicer against both paths (closed 2-manifolds only).
+  ReferenceSlicerFigures reference;
   double comparison_seconds = 0.0;  ///< spent comparing layers and measuring the model
   /// Warnings of both paths and notes of the comparison (metrics that could not be measured).
   Diagnostics diagnostics;

@@ -45,6 +45,34 @@ TEST(ValidateCommand, WritesTheJsonReport) {
   EXPECT_TRUE(report.at("scan_offset").at("measured").get<bool>());
 }
 
+TEST(ValidateCommand, PrintsTheReferenceSlicer) {
+  TempDir dir("validate");
+  const auto run = run_cli({"validate", write_box(dir), "--cell", "0.5", "--layer", "0.5"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("reference slicer (CGAL Polygon_mesh_slicer"), std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("exact kernel): 7 layers"), std::string::npos) << run.out;
+}
+
+TEST(ValidateCommand, TurnsTheReferenceSlicerOff) {
+  TempDir dir("validate");
+  const auto json_path = dir / "box-validation.json";
+  const auto run = run_cli({"validate", write_box(dir), "--cell", "0.5", "--layer", "0.5",
+                            "--reference-slicer", "off", "--json", json_path.string()});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("exact kernel): off"), std::string::npos) << run.out;
+  std::ifstream in(json_path);
+  const nlohmann::json report = nlohmann::json::parse(in);
+  EXPECT_FALSE(report.at("reference_slicer").at("ran").get<bool>());
+  EXPECT_EQ(report.at("reference_slicer").at("skipped"), "off");
+}
+
+TEST(ValidateCommand, RefusesAnUnknownReferenceSlicerValue) {
+  TempDir dir("validate");
+  const auto run = run_cli({"validate", write_box(dir), "--reference-slicer", "maybe"});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+}
+
 TEST(ValidateCommand, RefusesTheWindingRuleAsBadUsage) {
   TempDir dir("validate");
   const auto run = run_cli({"validate", write_box(dir), "--fill-rule", "winding"});
