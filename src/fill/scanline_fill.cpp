@@ -70,15 +70,11 @@ void emit_row(FillRule rule, const GridSpec& grid, std::span<RowCrossing> row, s
   }
 }
 
-}  // namespace
-
-LayerFill scanline_fill(const IndexedMesh& mesh, const LayerSegments& segments,
-                        const GridSpec& grid, FillRule rule, double scan_offset_mm,
-                        bool want_hatches) {
-  const std::uint64_t fallbacks_before = detail::exact_fallback_counter();
-  LayerFill out;
-  out.layer = segments.layer;
-  out.solid.assign(grid.cells_per_layer(), 0);
+/// Every crossing of layer `segments` with the rows' scanlines, weighted by sign(nx) of the facet
+/// (or 1 when `unit_weights`), with the number of cells left of it decided exactly.
+std::vector<RowCrossing> collect_crossings(const IndexedMesh& mesh, const LayerSegments& segments,
+                                           const GridSpec& grid, bool unit_weights,
+                                           double scan_offset_mm) {
   const double z = segments.z_mm;
   const auto row_y = [&](std::uint32_t j) { return grid.yc(j) + scan_offset_mm; };
   const double y_base = grid.y0 + scan_offset_mm;
@@ -104,7 +100,7 @@ LayerFill scanline_fill(const IndexedMesh& mesh, const LayerSegments& segments,
     const std::uint32_t last = std::max(rows_p, rows_q);
     const auto& t = mesh.triangles[s.facet];
     const int weight =
-        rule == FillRule::EvenOdd
+        unit_weights
             ? 1
             : detail::normal_x_sign(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
     const Vec3& b_lo = q_is_above ? p_lo : q_lo;  // the end point below the scanline
@@ -125,20 +121,61 @@ LayerFill scanline_fill(const IndexedMesh& mesh, const LayerSegments& segments,
       crossings.push_back({j, cells_left, weight, x});
     }
   }
-  out.crossings = crossings.size();
-
   std::sort(crossings.begin(), crossings.end(),
             [](const RowCrossing& a, const RowCrossing& b) { return a.row < b.row; });
+  return crossings;
+}
+
+/// Calls visit(row, crossings of the row) for every row with crossings, in increasing row order.
+template <typename Visit>
+void for_each_row(std::vector<RowCrossing>& crossings, Visit&& visit) {
   for (std::size_t begin = 0; begin < crossings.size();) {
     std::size_t end = begin;
     while (end < crossings.size() && crossings[end].row == crossings[begin].row) ++end;
-    const std::uint32_t row = crossings[begin].row;
-    emit_row(rule, grid, std::span<RowCrossing>(crossings.data() + begin, end - begin),
-             out.solid.data() + std::size_t{row} * grid.nx, want_hatches ? &out.hatches : nullptr);
+    visit(crossings[begin].row, std::span<RowCrossing>(crossings.data() + begin, end - begin));
     begin = end;
   }
+}
+
+}  // namespace
+
+LayerFill scanline_fill(const IndexedMesh& mesh, const LayerSegments& segments,
+                        const GridSpec& grid, FillRule rule, double scan_offset_mm,
+                        bool want_hatches) {
+  const std::uint64_t fallbacks_before = detail::exact_fallback_counter();
+  LayerFill out;
+  out.layer = segments.layer;
+  out.solid.assign(grid.cells_per_layer(), 0);
+  std::vector<RowCrossing> crossings =
+      collect_crossings(mesh, segments, grid, rule == FillRule::EvenOdd, scan_offset_mm);
+  out.crossings = crossings.size();
+
+  for_each_row(crossings, [&](std::uint32_t row, std::span<RowCrossing> in_row) {
+    emit_row(rule, grid, in_row, out.solid.data() + std::size_t{row} * grid.nx,
+             want_hatches ? &out.hatches : nullptr);
+  });
   out.exact_fallbacks = detail::exact_fallback_counter() - fallbacks_before;
   return out;
+}
+
+std::vector<std::int32_t> scanline_winding_numbers(const IndexedMesh& mesh,
+                                                   const LayerSegments& segments,
+                                                   const GridSpec& grid, double scan_offset_mm) {
+  std::vector<std::int32_t> winding(grid.cells_per_layer(), 0);
+  std::vector<RowCrossing> crossings =
+      collect_crossings(mesh, segments, grid, false, scan_offset_mm);
+  for_each_row(crossings, [&](std::uint32_t row, std::span<RowCrossing> in_row) {
+    // A crossing adds its weight to the cells left of it: a difference array, then a suffix sum.
+    std::int32_t* cells = winding.data() + std::size_t{row} * grid.nx;
+    std::vector<std::int64_t> added(std::size_t{grid.nx} + 1, 0);
+    for (const RowCrossing& c : in_row) added[c.cells_left] += c.weight;
+    std::int64_t sum = 0;
+    for (std::uint32_t i = grid.nx; i-- > 0;) {
+      sum += added[i + 1];
+      cells[i] = static_cast<std::int32_t>(sum);
+    }
+  });
+  return winding;
 }
 
 }  // namespace strata

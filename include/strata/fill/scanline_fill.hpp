@@ -39,4 +39,12 @@ LayerFill scanline_fill(const IndexedMesh& mesh, const LayerSegments& segments,
                         const GridSpec& grid, FillRule rule, double scan_offset_mm,
                         bool want_hatches);
 
+/// The integer winding number of every cell centre of the layer (nx * ny, row-major): the sum of
+/// sign(nx) over the crossings right of the centre, by the same exact rule as scanline_fill.
+/// For a closed (or cycle-closed) surface this is its winding number around the centre; the
+/// `winding` fill rule builds on it.
+std::vector<std::int32_t> scanline_winding_numbers(const IndexedMesh& mesh,
+                                                   const LayerSegments& segments,
+                                                   const GridSpec& grid, double scan_offset_mm);
+
 }  // namespace strata

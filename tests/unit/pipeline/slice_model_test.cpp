@@ -110,16 +110,20 @@ TEST(SliceModel, OpenMeshReportsOpenChains) {
   EXPECT_EQ(r.summary.open_chain_reports[0].layer, 0u);
 }
 
-TEST(SliceModel, WindingRuleIsRefusedByTheFastPath) {
-  const IndexedMesh box = testing::indexed_box({0, 0, 0}, {1, 1, 1});
-  SliceOptions o = unit_cells(ShellMode::Distance, 0.5);
-  o.fill_rule = FillRule::Winding;
-  auto grid = make_grid(box.bounds(), o.grid);
-  testing::CollectingSink sink;
-  LayerSink* sinks[] = {&sink};
-  auto summary = slice_model(box, *grid, o, sinks);
-  ASSERT_FALSE(summary.has_value());
-  EXPECT_EQ(summary.error().code, ErrorCode::Usage);
+TEST(SliceModel, WindingRuleFillsABoxWithAMissingSideAsTheClosedBox) {
+  const IndexedMesh closed = testing::indexed_box({0, 0, 0}, {4, 4, 4});
+  IndexedMesh open = closed;
+  open.triangles.erase(open.triangles.begin() + 10, open.triangles.begin() + 12);  // the x = 4 side
+  SliceOptions nonzero = unit_cells(ShellMode::Distance, 0.5);
+  SliceOptions winding = nonzero;
+  winding.fill_rule = FillRule::Winding;
+  const Sliced expected = slice_with(closed, nonzero);
+  const Sliced got = slice_with(open, winding);
+  EXPECT_EQ(got.sink.layers, expected.sink.layers);
+  EXPECT_EQ(got.summary.open_chains, 4u);  // still reported: the caps only decide the cells
+  // Under nonzero the open box loses the rows the missing side should have closed.
+  const Sliced wrong = slice_with(open, nonzero);
+  EXPECT_NE(wrong.sink.layers, expected.sink.layers);
 }
 
 }  // namespace

@@ -1,0 +1,111 @@
+#include <algorithm>
+#include <cmath>
+
+#include "strata/contour/assemble_contours.hpp"
+#include "strata/fill/scanline_fill.hpp"
+#include "winding/winding_kernel_internal.hpp"
+
+namespace strata::detail {
+
+namespace {
+
+std::vector<std::array<Vec3, 3>> cap_triangles(const winding::BoundaryCaps& caps) {
+  std::vector<std::array<Vec3, 3>> out;
+  out.reserve(caps.closed.triangles.size() - caps.mesh_facets);
+  for (std::size_t f = caps.mesh_facets; f < caps.closed.triangles.size(); ++f) {
+    const auto& t = caps.closed.triangles[f];
+    out.push_back(
+        {caps.closed.vertices[t[0]], caps.closed.vertices[t[1]], caps.closed.vertices[t[2]]});
+  }
+  return out;
+}
+
+/// Runs of solid cells along each row, as hatches from the first cell's left edge to the last
+/// cell's right edge.
+std::vector<HatchSegment> hatches_from_cells(const std::vector<std::uint8_t>& solid,
+                                             const GridSpec& grid) {
+  std::vector<HatchSegment> hatches;
+  for (std::uint32_t j = 0; j < grid.ny; ++j) {
+    const std::uint8_t* row = solid.data() + std::size_t{j} * grid.nx;
+    for (std::uint32_t i = 0; i < grid.nx;) {
+      if (!row[i]) {
+        ++i;
+        continue;
+      }
+      std::uint32_t end = i;
+      while (end < grid.nx && row[end]) ++end;
+      hatches.push_back({j, grid.x0 + static_cast<double>(i) * grid.dx,
+                         grid.x0 + static_cast<double>(end) * grid.dx});
+      i = end;
+    }
+  }
+  return hatches;
+}
+
+}  // namespace
+
+WindingKernel::WindingKernel(const IndexedMesh& mesh, const GridSpec& grid,
+                             const SliceOptions& options)
+    : caps_(winding::cap_boundary(mesh)),
+      cap_tree_(cap_triangles(caps_)),
+      grid_(grid),
+      options_(options),
+      ranges_(facet_layer_ranges(caps_.closed, grid)),
+      buckets_(bucket_facets_by_first_layer(ranges_, grid.nz)) {}
+
+void WindingKernel::prepare_batch(std::uint32_t k0, std::uint32_t k1) {
+  std::erase_if(active_, [&](FacetIndex f) { return ranges_.last[f] < k0; });
+  for (std::uint32_t k = k0; k < k1; ++k) {
+    for (std::uint32_t r = buckets_.offsets[k]; r < buckets_.offsets[k + 1]; ++r) {
+      active_.push_back(buckets_.facets[r]);
+    }
+  }
+}
+
+LayerGeometry WindingKernel::compute_layer(std::uint32_t k) const {
+  std::vector<FacetIndex> candidates;
+  candidates.reserve(active_.size());
+  for (const FacetIndex f : active_) {
+    if (ranges_.first[f] <= k && k <= ranges_.last[f]) candidates.push_back(f);
+  }
+  std::sort(candidates.begin(), candidates.end());
+  const LayerSegments closed = slice_layer(caps_.closed, candidates, grid_, k);
+  const std::vector<std::int32_t> integer =
+      scanline_winding_numbers(caps_.closed, closed, grid_, options_.scan_offset_mm);
+
+  LayerGeometry geometry;
+  geometry.fill.layer = k;
+  geometry.fill.solid.assign(grid_.cells_per_layer(), 0);
+  std::uint64_t guarded = 0;
+  for (std::uint32_t j = 0; j < grid_.ny; ++j) {
+    const std::size_t row = std::size_t{j} * grid_.nx;
+    for (std::uint32_t i = 0; i < grid_.nx; ++i) {
+      const std::int32_t n = integer[row + i];
+      if (cap_tree_.empty()) {
+        geometry.fill.solid[row + i] = n >= 1 ? 1 : 0;
+        continue;
+      }
+      const Vec3 q{grid_.xc(i), grid_.yc(j) + options_.scan_offset_mm, grid_.zk(k)};
+      double w = n - cap_tree_.evaluate(q);
+      if (std::abs(w - 0.5) < kGuardBand) {
+        w = n - (cap_tree_.facet_count() <= kDirectGuardFacets ? cap_tree_.evaluate_direct(q)
+                                                               : cap_tree_.evaluate(q, kGuardBeta));
+        ++guarded;
+      }
+      geometry.fill.solid[row + i] = w >= 0.5 ? 1 : 0;
+    }
+  }
+  guard_evaluations_ += guarded;
+  geometry.fill.hatches = hatches_from_cells(geometry.fill.solid, grid_);
+
+  // The contours are the mesh's own: the caps only serve the inside test.
+  LayerSegments own{closed.layer, closed.z_mm, {}};
+  for (const LayerSegment& s : closed.segments) {
+    if (s.facet < caps_.mesh_facets) own.segments.push_back(s);
+  }
+  geometry.segments = static_cast<std::uint32_t>(own.segments.size());
+  geometry.contours = assemble_contours(own);
+  return geometry;
+}
+
+}  // namespace strata::detail
