@@ -1,48 +1,19 @@
 #include "strata/contour/assemble_contours.hpp"
 
+#include <gmpxx.h>
+
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
+#include "contour/chain_segments_internal.hpp"
+#include "contour/loop_check_internal.hpp"
 #include "contour/point_in_polygon_internal.hpp"
 
 namespace strata {
 
 namespace {
-
-std::uint64_t edge_key(const CrossedEdge& e) { return (std::uint64_t{e.below} << 32) | e.above; }
-
-/// Segments sorted by the key of one of their edges, with a cursor per key so that candidates
-/// are taken in facet order and each only once.
-class EdgeIndex {
- public:
-  EdgeIndex(const std::vector<LayerSegment>& segments, bool by_start) {
-    entries_.reserve(segments.size());
-    for (std::uint32_t s = 0; s < segments.size(); ++s) {
-      entries_.push_back({edge_key(by_start ? segments[s].start_edge : segments[s].end_edge), s});
-    }
-    std::sort(entries_.begin(), entries_.end());
-  }
-
-  /// The first segment with this key that `used` does not mark, or -1.
-  std::int64_t take(std::uint64_t key, const std::vector<bool>& used) {
-    auto it = std::lower_bound(entries_.begin(), entries_.end(), Entry{key, 0});
-    for (; it != entries_.end() && it->key == key; ++it) {
-      if (!used[it->segment]) return it->segment;
-    }
-    return -1;
-  }
-
- private:
-  struct Entry {
-    std::uint64_t key;
-    std::uint32_t segment;
-    friend bool operator<(const Entry& a, const Entry& b) {
-      return a.key != b.key ? a.key < b.key : a.segment < b.segment;
-    }
-  };
-  std::vector<Entry> entries_;
-};
 
 double shoelace(const std::vector<Point2>& points) {
   double twice = 0.0;
@@ -86,72 +57,149 @@ void assign_nesting_depths(std::vector<Contour>& loops) {
     int depth = 0;
     for (const std::size_t j : closed) {
       if (i == j || !boxes[j].contains(probe)) continue;
-      // Loops of one layer do not cross (they come from a surface cut by a plane), so one vertex
-      // decides containment; a vertex on the other loop counts as outside.
+      // One vertex decides containment when loops do not cross; a vertex on the other loop
+      // counts as outside.
       if (detail::point_in_polygon(probe, loops[j].points) > 0) ++depth;
     }
     loops[i].depth = depth;
   }
 }
 
-}  // namespace
-
-LayerContours assemble_contours(const LayerSegments& layer) {
+/// The contours of the chains, as today: points are the segments' double start points (and the
+/// end of an open chain's last segment); kind by the sign of the shoelace area.
+LayerContours contours_of_chains(const LayerSegments& layer,
+                                 const std::vector<detail::SegmentChain>& chains) {
   const auto& segments = layer.segments;
   LayerContours out;
   out.layer = layer.layer;
   out.z_mm = layer.z_mm;
-  EdgeIndex by_start(segments, true);
-  EdgeIndex by_end(segments, false);
-  std::vector<bool> used(segments.size(), false);
-
-  for (std::uint32_t seed = 0; seed < segments.size(); ++seed) {
-    if (used[seed]) continue;
-    used[seed] = true;
-    std::vector<std::uint32_t> chain{seed};
-    const std::uint64_t start_key = edge_key(segments[seed].start_edge);
-    bool closed = false;
-    // Forward: follow the segment that starts on the edge where the current one ends.
-    while (true) {
-      const std::uint64_t key = edge_key(segments[chain.back()].end_edge);
-      if (key == start_key) {
-        closed = true;
-        break;
-      }
-      const std::int64_t next = by_start.take(key, used);
-      if (next < 0) break;
-      used[next] = true;
-      chain.push_back(static_cast<std::uint32_t>(next));
-    }
+  out.loops.reserve(chains.size());
+  for (const detail::SegmentChain& chain : chains) {
     Contour contour;
-    if (!closed) {
-      // Backward: extend the open chain at its start as far as it goes.
-      std::vector<std::uint32_t> head;
-      std::uint64_t key = start_key;
-      while (true) {
-        const std::int64_t previous = by_end.take(key, used);
-        if (previous < 0) break;
-        used[previous] = true;
-        head.push_back(static_cast<std::uint32_t>(previous));
-        key = edge_key(segments[previous].start_edge);
-      }
-      chain.insert(chain.begin(), head.rbegin(), head.rend());
-    }
-    contour.points.reserve(chain.size() + 1);
-    for (const std::uint32_t s : chain) contour.points.push_back(segments[s].start);
-    contour.is_closed = closed;
-    if (closed) {
+    contour.points.reserve(chain.segments.size() + 1);
+    for (const std::uint32_t s : chain.segments) contour.points.push_back(segments[s].start);
+    contour.is_closed = chain.closed;
+    if (chain.closed) {
       contour.signed_area_mm2 = shoelace(contour.points);
       contour.kind = contour.signed_area_mm2 >= 0.0 ? LoopKind::Outer : LoopKind::Hole;
       out.area_mm2 += contour.signed_area_mm2;
     } else {
-      contour.points.push_back(segments[chain.back()].end);
+      contour.points.push_back(segments[chain.segments.back()].end);
       contour.kind = LoopKind::Open;
       ++out.open_chains;
     }
     out.loops.push_back(std::move(contour));
   }
+  return out;
+}
+
+/// The fast path's crossing points as a LoopChecker geometry. The exact point of a segment end
+/// on edge lo -> hi is P = lo + (z - lo.z) / (hi.z - lo.z) * (hi - lo) (hi itself when
+/// hi.z == z); in homogeneous form (X, Y, W) with W = hi.z - lo.z > 0, every predicate is the
+/// sign of a polynomial in the input coordinates, evaluated on GMP rationals. The double points
+/// of LayerSegment are within margin() of P.
+class CrossingPointGeometry {
+ public:
+  CrossingPointGeometry(const IndexedMesh& mesh, const LayerSegments& layer)
+      : mesh_(mesh), layer_(layer) {
+    double largest = 0.0;
+    for (const LayerSegment& s : layer.segments) {
+      for (const CrossedEdge& e : {s.start_edge, s.end_edge}) {
+        for (const VertexIndex v : {e.below, e.above}) {
+          largest =
+              std::max({largest, std::fabs(mesh.vertices[v].x), std::fabs(mesh.vertices[v].y)});
+        }
+      }
+    }
+    // crossing_point() computes lo.x + t (hi.x - lo.x) with t = (z - lo.z) / (hi.z - lo.z):
+    // five roundings of relative size 2^-53 on terms bounded by 2 * largest, about 11 * 2^-53 *
+    // largest in all; 2^-48 leaves a factor of three. The second term covers underflow.
+    margin_ = largest * 0x1p-48 + 0x1p-1000;
+  }
+
+  Point2 approx(detail::SegmentEnd p) const {
+    const LayerSegment& s = layer_.segments[p.segment];
+    return p.end == 0 ? s.start : s.end;
+  }
+  double margin() const { return margin_; }
+  std::uint64_t key(detail::SegmentEnd p) const {
+    const CrossedEdge& e = edge(p);
+    // A crossing at the upper vertex is that vertex, whichever edge it is found on.
+    if (mesh_.vertices[e.above].z == layer_.z_mm) return (std::uint64_t{e.above} << 32) | e.above;
+    return detail::crossed_edge_key(e);
+  }
+  int exact_orientation(detail::SegmentEnd a, detail::SegmentEnd b, detail::SegmentEnd c) const {
+    const Homogeneous pa = homogeneous(a);
+    const Homogeneous pb = homogeneous(b);
+    const Homogeneous pc = homogeneous(c);
+    // det [pa; pb; pc] = Wa Wb Wc ((b - a) x (c - a)), and every W > 0.
+    const mpq_class det = pa.x * (pb.y * pc.w - pc.y * pb.w) - pa.y * (pb.x * pc.w - pc.x * pb.w) +
+                          pa.w * (pb.x * pc.y - pc.x * pb.y);
+    return sgn(det);
+  }
+  int exact_compare_x(detail::SegmentEnd a, detail::SegmentEnd b) const {
+    const Homogeneous pa = homogeneous(a);
+    const Homogeneous pb = homogeneous(b);
+    return sgn(mpq_class(pa.x * pb.w - pb.x * pa.w));
+  }
+  int exact_compare_y(detail::SegmentEnd a, detail::SegmentEnd b) const {
+    const Homogeneous pa = homogeneous(a);
+    const Homogeneous pb = homogeneous(b);
+    return sgn(mpq_class(pa.y * pb.w - pb.y * pa.w));
+  }
+
+ private:
+  struct Homogeneous {
+    mpq_class x, y, w;
+  };
+
+  const CrossedEdge& edge(detail::SegmentEnd p) const {
+    const LayerSegment& s = layer_.segments[p.segment];
+    return p.end == 0 ? s.start_edge : s.end_edge;
+  }
+
+  Homogeneous homogeneous(detail::SegmentEnd p) const {
+    const CrossedEdge& e = edge(p);
+    const Vec3& lo = mesh_.vertices[e.below];
+    const Vec3& hi = mesh_.vertices[e.above];
+    if (hi.z == layer_.z_mm) return {mpq_class(hi.x), mpq_class(hi.y), mpq_class(1)};
+    const mpq_class w = mpq_class(hi.z) - mpq_class(lo.z);
+    const mpq_class t = mpq_class(layer_.z_mm) - mpq_class(lo.z);
+    return {mpq_class(mpq_class(lo.x) * w + t * (mpq_class(hi.x) - mpq_class(lo.x))),
+            mpq_class(mpq_class(lo.y) * w + t * (mpq_class(hi.y) - mpq_class(lo.y))), w};
+  }
+
+  const IndexedMesh& mesh_;
+  const LayerSegments& layer_;
+  double margin_ = 0.0;
+};
+
+}  // namespace
+
+LayerContours assemble_contours(const LayerSegments& layer) {
+  LayerContours out = contours_of_chains(layer, detail::chain_segments(layer.segments));
   assign_nesting_depths(out.loops);
+  return out;
+}
+
+LayerContours assemble_contours(const IndexedMesh& mesh, const LayerSegments& layer) {
+  const std::vector<detail::SegmentChain> chains = detail::chain_segments(layer.segments);
+  LayerContours out = contours_of_chains(layer, chains);
+  const detail::LoopCheck check = detail::check_loops(CrossingPointGeometry(mesh, layer), chains);
+  out.loops_cross = check.contacts;
+  out.misnested = check.nesting_decided && !check.alternates;
+  if (!check.nesting_decided) {
+    assign_nesting_depths(out.loops);
+    return out;
+  }
+  // Loops that neither cross nor touch: kind and depth as decided exactly.
+  for (std::size_t c = 0; c < chains.size(); ++c) {
+    Contour& loop = out.loops[c];
+    loop.depth = check.depth[c];
+    if (check.orientation[c] != 0) {
+      loop.kind = check.orientation[c] > 0 ? LoopKind::Outer : LoopKind::Hole;
+    }
+  }
   return out;
 }
 

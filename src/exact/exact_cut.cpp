@@ -111,7 +111,7 @@ ExactLayer cut_layer(const IndexedMesh& mesh, std::span<const FacetIndex> candid
     s.start = point_on(s.start_edge);
     s.end = point_on(s.end_edge);
     s.zero_length = compare_xy(s.start, s.end) == 0;
-    s.normal_x_sign = normal_x_signs[f];
+    s.normal_x_sign = normal_x_signs.empty() ? 0 : normal_x_signs[f];
     out.segments.push_back(std::move(s));
   }
   return out;

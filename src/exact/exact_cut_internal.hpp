@@ -15,7 +15,8 @@ std::vector<std::int8_t> facet_normal_x_signs(const IndexedMesh& mesh);
 /// (a vertex with z == plane counts as above) gives one segment between the exact crossing points
 /// of its two crossing edges, directed by the facet's own vertex order.
 /// @param candidates facets to try, in increasing order; the others are not looked at
-/// @param normal_x_signs facet_normal_x_signs(mesh)
+/// @param normal_x_signs facet_normal_x_signs(mesh), or empty when the caller needs no cells
+///        (every segment's normal_x_sign is then 0)
 ExactLayer cut_layer(const IndexedMesh& mesh, std::span<const FacetIndex> candidates,
                      std::span<const std::int8_t> normal_x_signs, std::uint32_t layer, double z);
 

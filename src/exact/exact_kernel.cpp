@@ -6,6 +6,8 @@
 #include <limits>
 #include <new>
 
+#include "contour/chain_segments_internal.hpp"
+#include "contour/loop_check_internal.hpp"
 #include "exact/exact_arrangement_internal.hpp"
 #include "exact/exact_cut_internal.hpp"
 #include "exact/exact_fill_internal.hpp"
@@ -32,6 +34,57 @@ std::uint32_t layers_at_or_below(const GridSpec& grid, double z) {
   }
   return lo;
 }
+
+/// The exact crossing points of a layer as a LoopChecker geometry: the rounded points, within
+/// half an ulp of the exact ones, filter; the rationals decide.
+class ExactPointGeometry {
+ public:
+  explicit ExactPointGeometry(const ExactLayer& layer) : layer_(layer) {
+    double largest = 0.0;
+    for (const ExactSegment& s : layer.segments) {
+      for (const ExactPoint2* p : {&s.start, &s.end}) {
+        largest = std::max({largest, std::fabs(p->x.rounded), std::fabs(p->y.rounded)});
+      }
+    }
+    // Rounded to nearest: |rounded - exact| <= 2^-53 |rounded| for normal values, 2^-1075 below.
+    margin_ = largest * 0x1p-52 + 0x1p-1000;
+  }
+
+  Point2 approx(strata::detail::SegmentEnd p) const { return point(p).rounded(); }
+  double margin() const { return margin_; }
+  std::uint64_t key(strata::detail::SegmentEnd p) const {
+    const ExactSegment& s = layer_.segments[p.segment];
+    return strata::detail::crossed_edge_key(p.end == 0 ? s.start_edge : s.end_edge);
+  }
+  int exact_orientation(strata::detail::SegmentEnd a, strata::detail::SegmentEnd b,
+                        strata::detail::SegmentEnd c) const {
+    const ExactPoint2& pa = point(a);
+    const ExactPoint2& pb = point(b);
+    const ExactPoint2& pc = point(c);
+    const Rational r = (pb.x.exact - pa.x.exact) * (pc.y.exact - pa.y.exact) -
+                       (pb.y.exact - pa.y.exact) * (pc.x.exact - pa.x.exact);
+    return sign_of(r);
+  }
+  int exact_compare_x(strata::detail::SegmentEnd a, strata::detail::SegmentEnd b) const {
+    return sign_of(point(a).x.exact - point(b).x.exact);
+  }
+  int exact_compare_y(strata::detail::SegmentEnd a, strata::detail::SegmentEnd b) const {
+    return sign_of(point(a).y.exact - point(b).y.exact);
+  }
+
+ private:
+  static int sign_of(const Rational& r) {
+    const Rational zero(0);
+    return r < zero ? -1 : (zero < r ? 1 : 0);
+  }
+  const ExactPoint2& point(strata::detail::SegmentEnd p) const {
+    const ExactSegment& s = layer_.segments[p.segment];
+    return p.end == 0 ? s.start : s.end;
+  }
+
+  const ExactLayer& layer_;
+  double margin_ = 0.0;
+};
 
 }  // namespace
 
@@ -126,8 +179,16 @@ LayerGeometry ExactKernel::compute_layer(std::uint32_t k) const {
     geometry.contours = finish_contours(k, z, {}, 0);
     return geometry;
   }
+  // The layer's loops chained by topology, as the fast path chains them, and checked by the
+  // same exact rule (issue 3): only simple loops are taken from the halfedge structure (where
+  // they are simple, both chainings give the same loops); any other layer gets the outline of
+  // the region the fill rule fills.
+  const std::vector<strata::detail::SegmentChain> chains =
+      strata::detail::chain_segments(layer.segments);
+  const strata::detail::LoopCheck check =
+      strata::detail::check_loops(ExactPointGeometry(layer), chains);
   std::optional<std::vector<ExactLoop>> loops;
-  if (method_ == ContourMethod::Automatic) loops = soup_->chain_layer(layer);
+  if (method_ == ContourMethod::Automatic && check.simple()) loops = soup_->chain_layer(layer);
   if (loops) {
     ++halfedge_layers_;
     geometry.contours = finish_contours(k, z, std::move(*loops), 0);
@@ -135,7 +196,10 @@ LayerGeometry ExactKernel::compute_layer(std::uint32_t k) const {
     ++arrangement_layers_;
     ArrangementContours a = arrangement_contours(layer, options_.fill_rule, grid_.x0);
     geometry.contours = finish_contours(k, z, std::move(a.loops), a.open_chains);
+    geometry.contours.outline = true;
   }
+  geometry.contours.loops_cross = check.contacts;
+  geometry.contours.misnested = check.nesting_decided && !check.alternates;
   return geometry;
 }
 
@@ -175,8 +239,9 @@ void add_report_diagnostics(const ExactSliceReport& r, Diagnostics& out) {
   }
   if (r.polygon_mesh && r.arrangement_layers > 0) {
     out.push_back({Severity::Info, "exact.arrangement_layers",
-                   fmt::format("exact path: {} layers did not chain through the halfedge "
-                               "structure and were assembled on the exact arrangement",
+                   fmt::format("exact path: {} layers were assembled on the exact arrangement "
+                               "(their loops did not chain through the halfedge structure, or "
+                               "are open, cross, touch or do not alternate in orientation)",
                                r.arrangement_layers)});
   }
 }
@@ -188,9 +253,11 @@ Result<SliceSummary> slice_model_exact(const IndexedMesh& mesh, const GridSpec& 
                                        std::span<LayerSink* const> sinks,
                                        const ProgressCallback& progress, ExactSliceReport* report) {
   if (options.fill_rule == FillRule::Winding) {
-    return Error{ErrorCode::Usage,
-                 "--fill-rule winding is not available in this version; use nonzero or evenodd",
-                 {}};
+    return Error{
+        ErrorCode::Usage,
+        "--fill-rule winding is evaluated by the fast path only (solid angles are not exact): "
+        "use --kernel fast, or nonzero or evenodd",
+        {}};
   }
   if (auto ok = exact::detail::check_mesh_for_exact(mesh); !ok) return ok.error();
   bool started = false;

@@ -1,5 +1,8 @@
 #include <algorithm>
+#include <exception>
+#include <new>
 
+#include "exact/exact_outline_internal.hpp"
 #include "pipeline/fast_kernel_internal.hpp"
 #include "strata/contour/assemble_contours.hpp"
 #include "strata/fill/scanline_fill.hpp"
@@ -36,8 +39,39 @@ LayerGeometry FastKernel::compute_layer(std::uint32_t k) const {
   geometry.segments = static_cast<std::uint32_t>(segments.segments.size());
   geometry.fill =
       scanline_fill(mesh_, segments, grid_, options_.fill_rule, options_.scan_offset_mm, true);
-  geometry.contours = assemble_contours(segments);
+  geometry.contours = assemble_contours(mesh_, segments);
+  if (!geometry.contours.loops_are_simple()) {
+    geometry.contours = outline_layer(std::move(geometry.contours), candidates, k);
+  }
   return geometry;
+}
+
+LayerContours FastKernel::outline_layer(LayerContours chained,
+                                        std::span<const FacetIndex> candidates,
+                                        std::uint32_t k) const {
+  // Issue 3: loops that cross, touch, stay open or nest without alternating are not boundaries
+  // of the filled region; the exact path's outline of that region replaces them, so both paths
+  // give the same contours. Only nonzero and evenodd have an arrangement outline.
+  if (options_.fill_rule != FillRule::NonZero && options_.fill_rule != FillRule::EvenOdd) {
+    return chained;
+  }
+  LayerContours out;
+  try {
+    out = exact::detail::outline_contours(mesh_, candidates, grid_, k, options_.fill_rule);
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception&) {
+    // A CGAL failure: keep the chained loops; their flags still say why they are not simple.
+    return chained;
+  }
+  // Open chains stay reported as chained, with their end points (issue 4: never hidden).
+  for (Contour& c : chained.loops) {
+    if (c.kind == LoopKind::Open) out.loops.push_back(std::move(c));
+  }
+  out.open_chains = chained.open_chains;
+  out.loops_cross = chained.loops_cross;
+  out.misnested = chained.misnested;
+  return out;
 }
 
 }  // namespace strata::detail

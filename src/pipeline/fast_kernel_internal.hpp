@@ -1,5 +1,6 @@
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "strata/pipeline/layer_kernel.hpp"
@@ -18,6 +19,11 @@ class FastKernel final : public LayerKernel {
   LayerGeometry compute_layer(std::uint32_t k) const override;
 
  private:
+  /// The layer's contours when its chained loops are not simple: the exact outline of the
+  /// filled region, plus the chained open chains; `chained` unchanged if no outline can be made.
+  LayerContours outline_layer(LayerContours chained, std::span<const FacetIndex> candidates,
+                              std::uint32_t k) const;
+
   const IndexedMesh& mesh_;
   GridSpec grid_;
   SliceOptions options_;

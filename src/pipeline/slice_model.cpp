@@ -9,9 +9,11 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "pipeline/fast_kernel_internal.hpp"
 #include "strata/voxel/boundary_shell.hpp"
+#include "winding/winding_kernel_internal.hpp"
 
 namespace strata {
 
@@ -23,6 +25,68 @@ constexpr double kBatchMemoryBytes = 2.0e9;
 
 void abort_all(std::span<LayerSink* const> sinks) {
   for (LayerSink* sink : sinks) sink->abort();
+}
+
+void add_winding_diagnostics(const detail::WindingKernel& kernel, SliceSummary& summary) {
+  const winding::BoundaryCaps& caps = kernel.caps();
+  if (caps.boundary_edges == 0) {
+    summary.diagnostics.push_back(
+        {Severity::Info, "winding.closed",
+         "fill rule winding: the mesh has no boundary, so its winding number is the integer the "
+         "crossing rule gives and every cell was decided exactly"});
+    return;
+  }
+  summary.diagnostics.push_back(
+      {Severity::Info, "winding.caps",
+       fmt::format("fill rule winding: {} boundary edges in {} components were capped; the caps' "
+                   "winding number was approximated hierarchically and evaluated again for {} "
+                   "cells within {} of 1/2",
+                   caps.boundary_edges, caps.components, kernel.guard_evaluations(),
+                   detail::WindingKernel::kGuardBand)});
+}
+
+/// "3, 4, 5" for the first few layers that `has` picks, "3, 4, 5, ..." when there are more.
+template <class Has>
+std::string first_layers(const std::vector<LayerStats>& layers, Has has) {
+  constexpr std::size_t kShown = 5;
+  std::string out;
+  std::size_t shown = 0;
+  for (const LayerStats& l : layers) {
+    if (!has(l)) continue;
+    if (shown == kShown) return out + ", ...";
+    out += (shown++ == 0 ? "" : ", ") + std::to_string(l.layer);
+  }
+  return out;
+}
+
+/// Issue 4 item 4: say which layers' loops cross or nest wrongly, and what the contours are then.
+void add_loop_diagnostics(SliceSummary& summary) {
+  const auto tail = [&](auto has) {
+    std::uint32_t outlined = 0;
+    std::uint32_t total = 0;
+    for (const LayerStats& l : summary.layers) {
+      if (!has(l)) continue;
+      ++total;
+      outlined += l.outline ? 1 : 0;
+    }
+    if (outlined == total) return std::string(": contours are the outline of the filled region");
+    if (outlined == 0) return std::string(": contours are the chained loops");
+    return fmt::format(": contours are the outline of the filled region in {} of them", outlined);
+  };
+  if (summary.crossing_loop_layers > 0) {
+    const auto has = [](const LayerStats& l) { return l.loops_cross; };
+    summary.diagnostics.push_back(
+        {Severity::Warning, "contours.loops_cross",
+         fmt::format("loops cross or touch each other in {} layers (first: {}){}",
+                     summary.crossing_loop_layers, first_layers(summary.layers, has), tail(has))});
+  }
+  if (summary.misnested_layers > 0) {
+    const auto has = [](const LayerStats& l) { return l.misnested; };
+    summary.diagnostics.push_back(
+        {Severity::Warning, "contours.loops_misnested",
+         fmt::format("nested loops do not alternate in orientation in {} layers (first: {}){}",
+                     summary.misnested_layers, first_layers(summary.layers, has), tail(has))});
+  }
 }
 
 }  // namespace
@@ -112,6 +176,12 @@ Result<SliceSummary> run_slice(const IndexedMesh& mesh, const GridSpec& grid,
           }
         }
       }
+      stats.loops_cross = g.contours.loops_cross;
+      stats.misnested = g.contours.misnested;
+      stats.outline = g.contours.outline;
+      summary.crossing_loop_layers += stats.loops_cross ? 1 : 0;
+      summary.misnested_layers += stats.misnested ? 1 : 0;
+      summary.outline_layers += stats.outline ? 1 : 0;
       stats.contour_area_mm2 = g.contours.area_mm2;
       for (const CellClass c : cells) {
         if (c == CellClass::Interior) ++stats.interior;
@@ -144,6 +214,7 @@ Result<SliceSummary> run_slice(const IndexedMesh& mesh, const GridSpec& grid,
       return ok.error();
     }
   }
+  add_loop_diagnostics(summary);
   summary.class_counts[0] = grid.cell_count() - summary.class_counts[1] - summary.class_counts[2];
   summary.solid_volume_mm3 =
       static_cast<double>(summary.class_counts[1] + summary.class_counts[2]) * grid.dx * grid.dy *
@@ -157,9 +228,10 @@ Result<SliceSummary> slice_model(const IndexedMesh& mesh, const GridSpec& grid,
                                  const SliceOptions& options, std::span<LayerSink* const> sinks,
                                  const ProgressCallback& progress) {
   if (options.fill_rule == FillRule::Winding) {
-    return Error{ErrorCode::Usage,
-                 "--fill-rule winding is not available in this version; use nonzero or evenodd",
-                 {}};
+    detail::WindingKernel kernel(mesh, grid, options);
+    auto summary = run_slice(mesh, grid, options, kernel, sinks, progress);
+    if (summary) add_winding_diagnostics(kernel, *summary);
+    return summary;
   }
   detail::FastKernel kernel(mesh, grid, options);
   return run_slice(mesh, grid, options, kernel, sinks, progress);

@@ -32,6 +32,19 @@ struct LayerContours {
   std::uint32_t open_chains = 0;
   /// Net area of the closed loops (sum of signed areas).
   double area_mm2 = 0.0;
+  /// Two pieces of the chained loops cross or touch (issue 3): pieces of two chains, or two
+  /// pieces of one chain that do not follow each other. Decided exactly.
+  bool loops_cross = false;
+  /// The chained loops neither cross nor touch, but their orientations do not alternate with
+  /// nesting depth (outer loops counter-clockwise at even depth, holes clockwise at odd depth).
+  bool misnested = false;
+  /// The closed loops are the outline of the region the fill rule fills, from the exact
+  /// arrangement, not the chained loops (see assemble_contours); Open loops are still the chains.
+  bool outline = false;
+
+  /// Every chain closed, no crossing or touching, orientations alternating with depth: then each
+  /// chained loop bounds the region the fill rule fills, under nonzero and evenodd alike.
+  bool loops_are_simple() const { return open_chains == 0 && !loops_cross && !misnested; }
 };
 
 }  // namespace strata

@@ -22,6 +22,12 @@ struct LayerStats {
   std::uint32_t outer_loops = 0;
   std::uint32_t holes = 0;
   std::uint32_t open_chains = 0;
+  /// The chained loops cross or touch each other (issue 3 / issue 4 item 4).
+  bool loops_cross = false;
+  /// The chained loops nest without alternating in orientation.
+  bool misnested = false;
+  /// The closed contours are the outline of the filled region, not the chained loops.
+  bool outline = false;
   double contour_area_mm2 = 0.0;
   std::uint64_t interior = 0;
   std::uint64_t boundary = 0;
@@ -43,6 +49,9 @@ struct SliceSummary {
   double contour_volume_mm3 = 0.0;  ///< sum of layer contour areas * dz
   std::uint64_t segments = 0;
   std::uint64_t open_chains = 0;
+  std::uint32_t crossing_loop_layers = 0;  ///< layers whose chained loops cross or touch
+  std::uint32_t misnested_layers = 0;      ///< layers whose loops nest without alternating
+  std::uint32_t outline_layers = 0;        ///< layers whose contours are the outline
   std::uint64_t exact_fallbacks = 0;  ///< decisions the double filter handed to exact arithmetic
   std::vector<LayerStats> layers;
   std::vector<OpenChainReport> open_chain_reports;  ///< the first 1000
@@ -62,8 +71,9 @@ Result<SliceSummary> run_slice(const IndexedMesh& mesh, const GridSpec& grid,
 
 /// Slices a mesh on a grid with the fast path and streams every layer, classified, to the sinks
 /// in order. Only the window of layers the shell reaches is held in memory.
-/// @return the summary; or the first sink error (every sink is aborted then), or Error{Usage}
-///         for a fill rule the fast path does not implement.
+/// Under FillRule::Winding the cells come from the generalized winding number (src/winding)
+/// instead of the crossing rule; contours and open chains are the same as under the others.
+/// @return the summary; or the first sink error (every sink is aborted then).
 Result<SliceSummary> slice_model(const IndexedMesh& mesh, const GridSpec& grid,
                                  const SliceOptions& options, std::span<LayerSink* const> sinks,
                                  const ProgressCallback& progress = {});

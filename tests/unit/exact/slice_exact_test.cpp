@@ -292,18 +292,20 @@ TEST(ExactSliceReport, SharedEdgeIsSplitByOrientation) {
   EXPECT_EQ(r.report.non_manifold_edges, 1u);
   EXPECT_GT(r.report.points_duplicated, 0u);
   EXPECT_TRUE(r.report.polygon_mesh);
-  EXPECT_EQ(r.report.halfedge_layers, 2u);
+  // The two squares touch at a corner in every layer: not simple, so outlined.
+  EXPECT_EQ(r.report.arrangement_layers, 2u);
   EXPECT_DOUBLE_EQ(r.sink.contours[0].area_mm2, 8.0);
 }
 
-TEST(ExactSliceReport, OverlappingShellsChainSeparatelyThroughTheHalfedgeStructure) {
+TEST(ExactSliceReport, OverlappingShellsAreOutlinedWhereTheirLoopsCross) {
   IndexedMesh mesh = box({0, 0, 0}, {4, 4, 3});
   append(mesh, box({2, 2, 1}, {6, 6, 4}));
   const auto r = run_exact(mesh, *unit_grid(mesh), unit_options());
   ASSERT_TRUE(r.ok);
-  EXPECT_EQ(r.report.halfedge_layers, 4u);
-  ASSERT_EQ(r.sink.contours[1].loops.size(), 2u);
-  EXPECT_EQ(r.sink.contours[1].area_mm2, 32.0);  // loops as the surface gives them: overlapping
+  EXPECT_EQ(r.report.halfedge_layers, 2u);  // layers 0 and 3 hold one box each
+  EXPECT_EQ(r.report.arrangement_layers, 2u);
+  ASSERT_EQ(r.sink.contours[1].loops.size(), 1u);
+  EXPECT_EQ(r.sink.contours[1].area_mm2, 28.0);  // the union: 16 + 16 - 4
 }
 
 TEST(ExactSliceReport, DuplicateFacetsAreRemovedAndTheirLayersUseTheArrangement) {
@@ -340,22 +342,27 @@ TEST(ExactSliceReport, UnweldedCopiesAreMerged) {
   ASSERT_TRUE(r.ok);
   EXPECT_EQ(r.report.points_merged, 36u - 8u);
   EXPECT_TRUE(r.report.polygon_mesh);
-  EXPECT_EQ(r.report.halfedge_layers, 2u);
+  // The input's own edges do not chain (every facet has its own corners), so the layers are
+  // outlined on the arrangement: the same square.
+  EXPECT_EQ(r.report.arrangement_layers, 2u);
+  EXPECT_EQ(r.sink.contours[0].area_mm2, 4.0);
 }
 
 // --- orientation and hatches ---------------------------------------------------------------------
 
-TEST(ExactSliceContours, InsideOutBoxGivesClockwiseLoopsLikeTheFastPath) {
+TEST(ExactSliceContours, InsideOutBoxIsOutlinedAsTheRegionNonzeroFillsLikeTheFastPath) {
   IndexedMesh mesh = box({0, 0, 0}, {4, 3, 2});
   for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
   const auto exact = run_exact(mesh, *unit_grid(mesh), unit_options());
   const auto fast = run_fast(mesh, *unit_grid(mesh), unit_options());
   ASSERT_TRUE(exact.ok && fast.ok);
   for (std::uint32_t k = 0; k < 2; ++k) {
+    // A lone clockwise loop does not alternate with depth: winding -1 is filled under nonzero,
+    // and both paths give the outline of that region, counter-clockwise.
     ASSERT_EQ(exact.sink.contours[k].loops.size(), 1u);
-    EXPECT_EQ(exact.sink.contours[k].loops[0].kind, LoopKind::Hole);
-    EXPECT_EQ(exact.sink.contours[k].area_mm2, -12.0);
-    EXPECT_EQ(fast.sink.contours[k].area_mm2, -12.0);
+    EXPECT_EQ(exact.sink.contours[k].loops[0].kind, LoopKind::Outer);
+    EXPECT_EQ(exact.sink.contours[k].area_mm2, 12.0);
+    EXPECT_EQ(fast.sink.contours[k].area_mm2, 12.0);
   }
 }
 
