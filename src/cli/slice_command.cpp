@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -20,7 +21,11 @@
 #include "strata/export/output_file.hpp"
 #include "strata/export/png_stack_writer.hpp"
 #include "strata/export/svg_writer.hpp"
+#include "strata/mesh/weld_vertices.hpp"
 #include "strata/pipeline/slice_model.hpp"
+#include "strata/repair/repair_log_json.hpp"
+#include "strata/repair/repair_log_text.hpp"
+#include "strata/repair/repair_mesh.hpp"
 
 namespace strata::cli {
 
@@ -38,6 +43,8 @@ struct SliceCommandOptions {
   std::string kernel = "fast";
   SliceCliOptions slice;
   bool quiet = false;
+  bool repair = false;      ///< --repair: slice the repaired mesh (in memory)
+  bool fill_holes = false;  ///< --fill-holes, with --repair
 };
 
 Result<std::set<std::string>> parse_formats(const std::string& list) {
@@ -82,6 +89,21 @@ int run_slice(const SliceCommandOptions& o) {
   if (!model) return report_error(model.error());
   for (const auto& d : model->soup.diagnostics) {
     std::fprintf(stderr, "strata: warning: %s\n", d.message.c_str());
+  }
+  std::optional<repair::RepairLog> repair_log;
+  double seconds_repair = 0.0;
+  if (o.repair) {
+    // The repaired mesh replaces the one read, in memory only; the model file is not touched.
+    const auto repair_started = Clock::now();
+    auto repaired =
+        repair::repair_mesh(model->soup, repair::RepairOptions{.fill_holes = o.fill_holes});
+    if (!repaired) return report_error(repaired.error());
+    repaired->soup.format = model->soup.format;
+    model->soup = std::move(repaired->soup);
+    model->mesh = weld_vertices(model->soup);
+    repair_log = std::move(repaired->log);
+    seconds_repair = std::chrono::duration<double>(Clock::now() - repair_started).count();
+    std::fprintf(stderr, "strata: %s\n", repair::repair_log_summary(*repair_log).c_str());
   }
   auto grid = make_grid(model->mesh.bounds(), options->grid);
   if (!grid) return report_error(grid.error());
@@ -150,8 +172,12 @@ int run_slice(const SliceCommandOptions& o) {
   }
   const double seconds_total = std::chrono::duration<double>(Clock::now() - started).count();
   if (formats->count("json")) {
-    const auto report =
+    auto report =
         slice_report_json(*model, mesh_report, *options, o.kernel, *summary, seconds_total);
+    if (repair_log) {
+      report["repair"] = nlohmann::json::parse(repair::repair_log_json(*repair_log));
+      report["repair"]["seconds"] = seconds_repair;
+    }
     fs::create_directories(dir, ec);
     if (auto ok = io::write_text_file(dir / (stem + ".json"), report.dump(2) + "\n"); !ok) {
       return report_error(ok.error());
@@ -159,7 +185,8 @@ int run_slice(const SliceCommandOptions& o) {
     written.push_back(stem + ".json");
   }
   for (const auto& d : summary->diagnostics) {
-    std::fprintf(stderr, "strata: warning: %s\n", d.message.c_str());
+    std::fprintf(stderr, "strata: %s: %s\n", d.severity == Severity::Warning ? "warning" : "note",
+                 d.message.c_str());
   }
   if (o.quiet) return kExitOk;
 
@@ -218,6 +245,12 @@ void register_slice_command(CLI::App& app, CommandRunner& runner) {
                   "Comma list of outputs: cells, cells-ascii, png, svg, cli, cli-binary, json")
       ->default_val("cells,png,json");
   cmd->add_flag("-q,--quiet", options->quiet, "Print nothing on success");
+  auto* repair = cmd->add_flag("--repair", options->repair,
+                               "Repair the mesh in memory before slicing (as `strata check "
+                               "--repair`; the model file is not changed) and log it in the "
+                               "report");
+  cmd->add_flag("--fill-holes", options->fill_holes, "With --repair: fill holes too")
+      ->needs(repair);
   cmd->callback([options, &runner] { runner = [options] { return run_slice(*options); }; });
 }
 

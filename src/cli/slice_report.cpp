@@ -76,6 +76,9 @@ nlohmann::json slice_report_json(const LoadedModel& model, const diagnose::MeshR
       {"surface_area_mm2", mesh_report.surface_area_mm2},
       {"segments", s.segments},
       {"exact_fallbacks", s.exact_fallbacks},
+      {"crossing_loop_layers", s.crossing_loop_layers},
+      {"misnested_loop_layers", s.misnested_layers},
+      {"outline_layers", s.outline_layers},
   };
   nlohmann::json chains = nlohmann::json::array();
   for (const auto& c : s.open_chain_reports) {
@@ -98,6 +101,8 @@ nlohmann::json slice_report_json(const LoadedModel& model, const diagnose::MeshR
                       {"outer_loops", l.outer_loops},
                       {"holes", l.holes},
                       {"open_chains", l.open_chains},
+                      {"loops_cross", l.loops_cross},
+                      {"outline", l.outline},
                       {"contour_area_mm2", l.contour_area_mm2},
                       {"interior", l.interior},
                       {"boundary", l.boundary}});
