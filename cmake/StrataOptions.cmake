@@ -12,6 +12,15 @@ if(STRATA_SANITIZE)
                                                    -fno-sanitize-recover=all)
   target_link_options(strata_settings INTERFACE -fsanitize=${STRATA_SANITIZE})
 endif()
+# Fuzzing: coverage instrumentation everywhere, the libFuzzer runtime only in the fuzz targets
+# (fuzz/CMakeLists.txt adds -fsanitize=fuzzer to them).
+if(STRATA_BUILD_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    message(FATAL_ERROR "STRATA_BUILD_FUZZ needs clang (libFuzzer); configure with "
+                        "-DCMAKE_CXX_COMPILER=clang++ or the `fuzz` preset")
+  endif()
+  target_compile_options(strata_settings INTERFACE -fsanitize=fuzzer-no-link)
+endif()
 
 # Every source file below a folder of src/ belongs to the strata library, so adding a file to a
 # module needs no edit here.

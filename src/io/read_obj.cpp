@@ -179,7 +179,8 @@ Result<void> ObjReader::read_face(std::string_view rest) {
       return error_here("face uses vertex index 0; OBJ indices count from 1");
     }
     if (index < 0) {
-      if (-index > defined) {
+      // Not -index > defined: negating the smallest long long overflows.
+      if (index < -defined) {
         return error_here(fmt::format(
             "face uses relative vertex index {}, but only {} vertices are defined so far", index,
             defined));

@@ -1,0 +1,218 @@
+#!/usr/bin/env bash
+# Writes the seed corpus of the fuzz targets: fuzz/corpus/<target>/seed-*. Small files only (a
+# few KB at most): the sample and adversarial models of data/, and small hand-made files that
+# reach the corners of each format. Files named regress-* (inputs that once made a target fail)
+# are left alone. Needs python3 and gzip. Usage: fuzz/make_seeds.sh
+set -euo pipefail
+cd "$(dirname "$0")"
+root=..
+adv=$root/data/adversarial
+
+for t in fuzz_stl_binary fuzz_stl_ascii fuzz_obj fuzz_off fuzz_ply fuzz_cells; do
+  mkdir -p "corpus/$t"
+  rm -f "corpus/$t"/seed-*
+done
+
+copy() {  # copy TARGET FILE...
+  local t=$1
+  shift
+  for f in "$@"; do cp "$f" "corpus/$t/seed-$(basename "$f")"; done
+}
+
+copy fuzz_stl_binary "$root/data/tetrahedron.stl" "$adv"/{count_too_small,huge_count,nan_vertex,stray_byte,truncated}_binary.stl "$adv/tetra_binary.stl.gz"
+copy fuzz_stl_ascii "$root/data/tetrahedron_ascii.stl" "$adv"/{crlf,inf_normal,missing_endsolid,overflow_vertex,quad_facet,truncated_inside_facet,two_vertex_facet}_ascii.stl "$adv"/tetra_ascii.stl.gz "$adv"/gzip_without_gz_extension.stl "$adv"/truncated.stl.gz
+copy fuzz_obj "$adv"/{index_out_of_range,index_zero,nan_vertex}.obj
+copy fuzz_off "$adv"/{hostile_counts,truncated}.off
+copy fuzz_ply "$adv"/tetra_binary_{little,big}_endian.ply "$adv/truncated_binary.ply"
+
+python3 - <<'PY'
+import struct
+
+def write(target, name, data):
+    if isinstance(data, str):
+        data = data.encode()
+    with open("corpus/%s/seed-%s" % (target, name), "wb") as f:
+        f.write(data)
+
+def cube(x0=0.0, y0=0.0, z0=0.0, s=10.0, flip=False):
+    """The 12 outward triangles of an axis-aligned cube."""
+    v = [(x0 + s * (i & 1), y0 + s * (i >> 1 & 1), z0 + s * (i >> 2 & 1)) for i in range(8)]
+    quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+    tris = []
+    for a, b, c, d in quads:
+        for t in ((a, b, c), (a, c, d)):
+            tris.append(tuple(v[i] for i in (t[::-1] if flip else t)))
+    return tris
+
+def tetra(s=1.0):
+    v = [(0, 0, 0), (s, 0, 0), (0, s, 0), (0, 0, s)]
+    return [tuple(v[i] for i in f) for f in ((0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3))]
+
+def binary_stl(tris, header=b"strata fuzz seed", normal=(0.0, 0.0, 0.0)):
+    out = header.ljust(80, b"\0")[:80] + struct.pack("<I", len(tris))
+    for a, b, c in tris:
+        out += struct.pack("<12fH", *normal, *a, *b, *c, 0)
+    return out
+
+def ascii_stl(tris, name="seed", eol="\n", fmt="%g"):
+    lines = ["solid " + name]
+    for t in tris:
+        lines += ["  facet normal 0 0 0", "    outer loop"]
+        lines += ["      vertex " + " ".join(fmt % x for x in p) for p in t]
+        lines += ["    endloop", "  endfacet"]
+    lines.append("endsolid " + name)
+    return eol.join(lines) + eol
+
+T = "fuzz_stl_binary"
+write(T, "cube.stl", binary_stl(cube()))
+write(T, "cube_solid_header.stl", binary_stl(cube(), header=b"solid cube exported in binary"))
+write(T, "two_overlapping_cubes.stl", binary_stl(cube() + cube(5, 5, 5)))
+write(T, "nested_cubes_hole.stl", binary_stl(cube(0, 0, 0, 30) + cube(10, 10, 10, 10, flip=True)))
+write(T, "inverted_cube.stl", binary_stl(cube(flip=True)))
+write(T, "open_box.stl", binary_stl(cube()[:-2]))
+write(T, "degenerate_and_duplicate.stl",
+      binary_stl(tetra(10) + tetra(10)[:1] + [((0, 0, 0), (5, 5, 5), (10, 10, 10)), ((1, 1, 1),) * 3]))
+write(T, "flat_square.stl", binary_stl(cube()[:2]))
+write(T, "nonmanifold_edge.stl",
+      binary_stl(tetra(10) + [((0, 0, 0), (10, 0, 0), (5, -10, 5)), ((0, 0, 0), (5, -10, 5), (10, 0, 0))]))
+write(T, "huge_coordinates.stl", binary_stl(tetra(3e37)))
+write(T, "tiny_coordinates.stl", binary_stl(tetra(1e-30)))
+write(T, "nan_normal.stl", binary_stl(tetra(), normal=(float("nan"), float("inf"), 0.0)))
+write(T, "vertices_on_planes.stl", binary_stl(cube(0, 0, 0.05, 1.0)))
+
+T = "fuzz_stl_ascii"
+write(T, "cube.stl", ascii_stl(cube()))
+write(T, "keywords_upper_case.stl", ascii_stl(tetra(), fmt="%+.6E").upper().replace("SOLID SEED", "SOLID seed"))
+write(T, "two_solids.stl", ascii_stl(tetra(), "a") + ascii_stl(cube(3, 3, 3, 1), "b"))
+write(T, "tabs_and_bom.stl", "\ufeff" + ascii_stl(tetra()).replace("      ", "\t\t"))
+write(T, "facet_after_endsolid.stl",
+      ascii_stl(tetra()) + "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+      "vertex 0 1 0\nendloop\nendfacet\n")
+write(T, "junk_after_endsolid.stl", ascii_stl(tetra()) + "\x00\x00garbage trailer\n")
+write(T, "missing_endfacet.stl", ascii_stl(tetra()).replace("  endfacet\n", "", 1))
+write(T, "no_normal_values.stl", ascii_stl(tetra()).replace("facet normal 0 0 0", "facet", 2))
+
+T = "fuzz_obj"
+cube_v = "".join("v %d %d %d\n" % (i & 1, i >> 1 & 1, i >> 2 & 1) for i in range(8))
+cube_f = "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n"
+write(T, "cube_quads.obj", "# cube\no cube\n" + cube_v + cube_f)
+write(T, "slashes.obj", cube_v + "vt 0 0\nvn 0 0 1\n" +
+      "f 1/1/1 3/1/1 4/1/1 2/1/1\nf 5//1 6//1 8//1 7//1\nf 1/1 2/1 6/1 5/1\n"
+      "f 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n")
+write(T, "negative_indices.obj",
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf -4 -2 -3\nf -4 -3 -1\nf -4 -1 -2\nf -3 -2 -1\n")
+write(T, "continuation_and_tabs.obj",
+      "v\t0 0 0\nv 1 0 \\\n 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 \\\n 4\nf 1\t4 3\nf 2 3 4\n")
+write(T, "faces_before_vertices.obj",
+      "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n")
+write(T, "unknown_statements_crlf.obj",
+      ("mtllib a.mtl\nusemtl red\ng group\ns 1\nl 1 2\ncstype bezier\n" + cube_v + cube_f)
+      .replace("\n", "\r\n"))
+write(T, "colours_and_w.obj",
+      "v 0 0 0 1 0.5 0.5 0.5\nv 1 0 0 1.0\nv 0 1 0\nv 0 0 1 2\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n")
+write(T, "two_vertex_face.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\nf 1 2 3\n")
+
+T = "fuzz_off"
+cube_ov = "".join("%d %d %d\n" % (i & 1, i >> 1 & 1, i >> 2 & 1) for i in range(8))
+cube_of = "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n"
+write(T, "cube.off", "OFF\n8 6 12\n" + cube_ov + cube_of)
+write(T, "comments.off", "# a comment\nOFF # keyword\n\n8 6 0 # counts\n" + cube_ov + cube_of)
+write(T, "glued_counts.off", "OFF8 6 12\n" + cube_ov + cube_of)
+write(T, "coff_colours.off", "COFF\n4 4 6\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n"
+      "0 1 0 0 0 255 255\n0 0 1 9 9 9 255\n3 0 2 1 1 0 0\n3 0 1 3\n3 0 3 2\n3 1 2 3 0.5 0.5 0.5\n")
+write(T, "noff_normals.off", "NOFF\n4 4 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n0 0 1 0 0 1\n"
+      "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
+write(T, "homogeneous.off", "4OFF\n4 4 0\n0 0 0 1\n2 0 0 2\n0 1 0 1\n0 0 3 3\n"
+      "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
+write(T, "ndim.off", "nOFF\n4\n4 4 0\n0 0 0 7\n1 0 0 7\n0 1 0 7\n0 0 1 7\n"
+      "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
+write(T, "no_keyword_crlf.off", ("4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+      "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n").replace("\n", "\r\n"))
+write(T, "short_faces.off", "OFF\n3 3 0\n0 0 0\n1 0 0\n0 1 0\n0\n2 0 1\n3 0 1 2\n")
+write(T, "binary_keyword.off", "OFF BINARY\n")
+
+T = "fuzz_ply"
+def ply_header(fmt, nv, nf, vtype="float", itype="int", ctype="uchar", extra="", index="vertex_indices"):
+    return ("ply\nformat %s 1.0\ncomment strata fuzz seed\n%selement vertex %d\nproperty %s x\n"
+            "property %s y\nproperty %s z\nelement face %d\nproperty list %s %s %s\nend_header\n"
+            % (fmt, extra, nv, vtype, vtype, vtype, nf, ctype, itype, index))
+write(T, "cube_ascii.ply", ply_header("ascii", 8, 6) + cube_ov + cube_of)
+write(T, "crlf_vertex_index.ply",
+      ply_header("ascii", 4, 4, index="vertex_index").replace("\n", "\r\n") +
+      "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
+write(T, "tristrips.ply",
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement tristrips 1\nproperty list int int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n0 0 1\n8 0 2 1 3 -1 0 3 2\n")
+write(T, "extra_elements.ply",
+      "ply\nformat ascii 1.0\nobj_info made by hand\nelement camera 1\nproperty float view\n"
+      "element vertex 4\nproperty uchar red\nproperty double x\nproperty double y\n"
+      "property double z\nproperty list uchar float uv\nelement face 4\n"
+      "property list uchar float texcoord\nproperty list ushort uint vertex_indices\n"
+      "property int flags\nend_header\n1.5\n9 0 0 0 2 0.5 0.5\n9 1 0 0 0\n9 0 1 0 0\n9 0 0 1 0\n"
+      "0 3 0 2 1 7\n2 1 1 3 0 1 3 7\n0 3 0 3 2 7\n0 3 1 2 3 7\n")
+def binary_ply(endian):
+    e = "<" if endian == "little" else ">"
+    body = b""
+    for p in [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]:
+        body += struct.pack(e + "3d", *p)
+    for f in ((0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)):
+        body += struct.pack(e + "H3i", 3, *f)
+    return ply_header("binary_%s_endian" % endian, 4, 4, vtype="double", ctype="ushort").encode() + body
+write(T, "double_ushort_le.ply", binary_ply("little"))
+write(T, "double_ushort_be.ply", binary_ply("big"))
+write(T, "no_format.ply", "ply\nelement vertex 0\nend_header\n")
+write(T, "float_indices_empty_element.ply",
+      "ply\nformat ascii 1.0\nelement material 3\nelement vertex 4\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 4\nproperty list uchar float vertex_indices\n"
+      "end_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3.0\n3 0 3 2\n3 1 2 3e0\n")
+
+T = "fuzz_cells"
+def cells_binary(nx, ny, nz, codes, origin=(0.0, 0.0, 0.0), d=(1.0, 1.0, 1.0), t=0.5, pad=0):
+    out = b"STRCELL1" + struct.pack("<4I", 80, nx, ny, nz) + struct.pack("<7d", *origin, *d, t)
+    per_layer = nx * ny
+    for k in range(nz):
+        layer = codes[k * per_layer:(k + 1) * per_layer]
+        byte_count = (per_layer + 3) // 4
+        packed = bytearray(byte_count)
+        for idx, c in enumerate(layer):
+            packed[idx // 4] |= c << (6 - 2 * (idx % 4))
+        if pad and per_layer % 4:
+            packed[-1] |= pad
+        out += bytes(packed)
+    return out
+def cells_ascii(nx, ny, nz, codes, eol="\n", blank=False):
+    names = {0: "00", 1: "01", 3: "11", 2: "10"}
+    lines = ["strata-cells 1", "grid %d %d %d" % (nx, ny, nz), "origin 0 0 0",
+             "spacing 1 1 0.5", "shell 0.5"]
+    for k in range(nz):
+        if blank and k:
+            lines.append("")
+        lines.append("layer %d z=%g" % (k, 0.25 + 0.5 * k))
+        for j in range(ny):
+            lines.append("".join(names[codes[(k * ny + j) * nx + i]] for i in range(nx)))
+    return eol.join(lines) + eol
+ring = [3, 3, 3, 3, 1, 3, 3, 3, 3]
+codes = ring + [3] * 9 + [0] * 9
+write(T, "block.cells", cells_binary(3, 3, 3, codes))
+write(T, "padded_layer.cells", cells_binary(5, 3, 2, [3, 1, 0] * 10))
+write(T, "nonzero_padding.cells", cells_binary(5, 3, 1, [3, 1, 0] * 5, pad=1))
+write(T, "reserved_code.cells", cells_binary(2, 2, 1, [0, 2, 1, 3]))
+write(T, "bad_header_size.cells", cells_binary(1, 1, 1, [1])[:8] + struct.pack("<I", 96) + cells_binary(1, 1, 1, [1])[12:])
+write(T, "nan_spacing.cells", cells_binary(1, 1, 1, [1], d=(float("nan"), 1.0, 1.0)))
+write(T, "one_cell.cells", cells_binary(1, 1, 1, [3], origin=(-5.0, 1e6, 0.25), d=(0.1, 0.1, 0.05), t=0.0))
+write(T, "block.cells.txt", cells_ascii(3, 3, 3, codes))
+write(T, "blank_lines_crlf.cells.txt", cells_ascii(3, 3, 3, codes, eol="\r\n", blank=True))
+write(T, "reserved_code.cells.txt", cells_ascii(2, 2, 1, [0, 2, 1, 3]))
+write(T, "missing_shell.cells.txt", "strata-cells 1\ngrid 1 1 1\norigin 0 0 0\nspacing 1 1 1\nlayer 0 z=0.5\n11\n")
+write(T, "wide_row.cells.txt", cells_ascii(40, 1, 2, ([3] + [1] * 38 + [3]) * 2))
+write(T, "short_row.cells.txt", "strata-cells 1\nshell 1\nspacing 1 1 1\norigin 0 0 0\ngrid 2 1 1\nlayer 0 z=0.5\n11\n")
+PY
+
+# Compressed variants: the gzip path in front of each mesh reader.
+gzip -n -9 -c corpus/fuzz_stl_ascii/seed-cube.stl > corpus/fuzz_stl_ascii/seed-cube.stl.gz
+gzip -n -9 -c corpus/fuzz_obj/seed-cube_quads.obj > corpus/fuzz_obj/seed-cube_quads.obj.gz
+gzip -n -9 -c corpus/fuzz_off/seed-cube.off > corpus/fuzz_off/seed-cube.off.gz
+gzip -n -9 -c corpus/fuzz_ply/seed-cube_ascii.ply > corpus/fuzz_ply/seed-cube_ascii.ply.gz
+
+for t in corpus/*/; do echo "$(ls "$t" | wc -l) seeds in $t"; done

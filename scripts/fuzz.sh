@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of fuzz/ (clang, AddressSanitizer + UndefinedBehaviorSanitizer,
+# preset `fuzz`) and runs each for SECONDS on a copy of its seed corpus under build/fuzz/run/
+# (the repository is never written). Fails when a target finds a crash, a leak, a timeout or an
+# out-of-memory input; the input is left in build/fuzz/run/<target>/artifacts/.
+# Usage: scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]   (default 60 seconds, every target)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-60}"
+shift || true
+targets=("$@")
+if ((${#targets[@]} == 0)); then
+  targets=(fuzz_stl_binary fuzz_stl_ascii fuzz_obj fuzz_off fuzz_ply fuzz_cells)
+fi
+
+bash scripts/setup.sh
+# clang and the libFuzzer runtime (Debian 12: clang 14, runtime in libclang-rt-14-dev).
+packages=(clang libclang-rt-14-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "strata fuzz: installing ${missing[*]}"
+  sudo_cmd=()
+  if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake --preset fuzz > /dev/null
+cmake --build --preset fuzz -j "$(nproc)"
+
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$PWD/cmake/ubsan.supp"
+run_root=build/fuzz/run
+failed=()
+for t in "${targets[@]}"; do
+  dir="$run_root/$t"
+  rm -rf "$dir"
+  mkdir -p "$dir/corpus" "$dir/artifacts"
+  cp fuzz/corpus/"$t"/* "$dir/corpus/"
+  args=("$dir/corpus" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048
+        -max_len=65536 -print_final_stats=1 -artifact_prefix="$dir/artifacts/")
+  dict="fuzz/${t#fuzz_}.dict"
+  if [ -f "$dict" ]; then args+=(-dict="$dict"); fi
+  echo "strata fuzz: $t for ${seconds}s"
+  if "build/fuzz/fuzz/$t" "${args[@]}" > "$dir/log" 2>&1; then
+    grep -E '^#[0-9]+[[:space:]]+DONE' "$dir/log" | tail -1 || true
+  else
+    echo "strata fuzz: $t FAILED; the input is in $dir/artifacts/, the log in $dir/log:"
+    grep -E -A 30 'ERROR: |runtime error|fuzz check failed|deadly signal|timeout|out-of-memory' \
+      "$dir/log" | head -60 || tail -40 "$dir/log"
+    failed+=("$t")
+  fi
+done
+
+if ((${#failed[@]})); then
+  echo "strata fuzz: ${#failed[@]} target(s) failed: ${failed[*]}"
+  exit 1
+fi
+echo "strata fuzz: ${#targets[@]} target(s) ran ${seconds}s each without a finding"
