@@ -130,8 +130,12 @@ void slice_small(const TriangleSoup& soup, std::uint64_t seed) {
   }
 
   // Cells per axis and options, all picked by the input's hash.
-  const std::uint32_t n_xy = 1 + static_cast<std::uint32_t>(seed % (kMaxCellsXY - 1));
-  const std::uint32_t n_z = 1 + static_cast<std::uint32_t>((seed >> 8) % (kMaxCellsZ - 1));
+  // Mostly coarse grids (fast runs, many inputs a second), now and then up to the caps.
+  const bool fine = (seed >> 23) % 8 == 0;
+  const std::uint32_t n_xy =
+      1 + static_cast<std::uint32_t>(seed % (fine ? kMaxCellsXY - 1 : kMaxCellsXY / 4));
+  const std::uint32_t n_z =
+      1 + static_cast<std::uint32_t>((seed >> 8) % (fine ? kMaxCellsZ - 1 : kMaxCellsZ / 4));
   const std::array<std::uint32_t, 3> n{n_xy, n_xy, n_z};
   std::array<double, 3> d{};
   for (int a = 0; a < 3; ++a) {

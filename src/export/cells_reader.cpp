@@ -188,7 +188,8 @@ bool is_blank(std::string_view line) {
   return line.find_first_not_of(" \t") == std::string_view::npos;
 }
 
-Result<CellsHeader> read_ascii(const std::filesystem::path& path, const CellsLayerVisitor& visit) {
+Result<CellsHeader> read_ascii(const std::filesystem::path& path, std::uint64_t size,
+                               const CellsLayerVisitor& visit) {
   LineReader in(path);
   if (!in.is_open()) {
     return bad_input(path.string(), fmt::format("cannot open the file: {}", std::strerror(errno)));
@@ -265,6 +266,16 @@ Result<CellsHeader> read_ascii(const std::filesystem::path& path, const CellsLay
   }
   if (auto ok = check_header_values(h, fmt::format("{}: header", path.string())); !ok) {
     return ok.error();
+  }
+  // Every cell takes two characters of the file. A header that promises more cells than the file
+  // can hold is refused before a layer buffer (or a caller's per-layer storage) is sized from it:
+  // a 100-byte file must not allocate gigabytes.
+  const std::uint64_t layer_cells = g.cells_per_layer();
+  if (layer_cells > size / 2 || g.nz > size / 2 / layer_cells) {
+    return bad_input(fmt::format("{}: header", path.string()),
+                     fmt::format("grid {} x {} x {} has more cells than a file of {} bytes holds "
+                                 "at two characters a cell (truncated?)",
+                                 g.nx, g.ny, g.nz, size));
   }
 
   const std::size_t row_chars = std::size_t{g.nx} * 2;
@@ -362,7 +373,7 @@ Result<CellsHeader> read_cells_layers(const std::filesystem::path& path,
   constexpr std::string_view kAsciiWord = "strata-cells";
   if (head.substr(0, kAsciiWord.size()) == kAsciiWord) {
     file.reset();
-    return read_ascii(path, visit);
+    return read_ascii(path, size, visit);
   }
   if (size < kCellsMagic.size()) {
     return bad_input(name, fmt::format("file of {} bytes is too short to be a cells file", size));

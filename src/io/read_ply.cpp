@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <bit>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -333,6 +334,9 @@ Result<void> read_body(const PlyHeader& header, Body& body, std::string_view nam
       return error_at(std::string(name),
                       fmt::format("PLY {} element has no vertex_indices list", element.name));
     }
+    // An element without properties takes no bytes, so any count of it reads nothing; looping
+    // over a count of up to 2^64 - 1 empty items would not end.
+    if (element.properties.empty()) continue;
     // Every item takes at least one byte (binary) or two (ASCII): a count beyond that is a lie
     // and must not size an allocation.
     const std::uint64_t plausible = std::min<std::uint64_t>(element.count, body.remaining());
@@ -374,7 +378,17 @@ Result<void> read_body(const PlyHeader& header, Body& body, std::string_view nam
             return error_at(body.where(), fmt::format("PLY {} {} of {}: {}", element.name, item,
                                                       element.count, body.problem()));
           }
-          if (wanted) list.push_back(static_cast<std::int64_t>(value));
+          if (wanted) {
+            // A float-typed list, or a 64-bit integer rounded up to 2^63 on its way through
+            // double, may hold values no vertex index can be; converting them is undefined.
+            if (!(value >= -0x1p63 && value < 0x1p63 && value == std::floor(value))) {
+              return error_at(body.where(),
+                              fmt::format("PLY {} {}: vertex index {} is not a whole number of "
+                                          "magnitude below 2^63",
+                                          element.name, item, value));
+            }
+            list.push_back(static_cast<std::int64_t>(value));
+          }
         }
       }
       if (role == Role::Vertex) {

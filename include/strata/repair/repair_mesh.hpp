@@ -62,12 +62,13 @@ struct RepairResult {
 ///    are judged by the sign of their exact volume instead. Open shells bound nothing and are
 ///    left as they are (the log says how many).
 ///
-/// Exact predicates decide every test (CGAL Epick on the input's double coordinates); no
-/// coordinate is computed, so the output holds only input points and reads back bit-identically
+/// Exact predicates decide every test (CGAL Epick on the input's double coordinates; only the
+/// choice among the triangulations of a hole weighs areas and angles in double); no coordinate is
+/// computed, so the output holds only input points and reads back bit-identically
 /// from a binary STL (float32 input). The input is not modified.
 /// Repairing the output again changes no facet (RepairLog::changed_anything() is false); only
-/// the counts of merged points and of split non-manifold vertices, which describe the soup
-/// format, come back.
+/// counts that describe the mesh rather than a change come back (merged points, split
+/// non-manifold vertices, holes and seams left open).
 ///
 /// @return the repaired soup and its log; Error{BadInput} for a non-finite coordinate (location
 ///         "facet N"); Error{Internal} when CGAL fails (message says where).
