@@ -143,13 +143,46 @@ ArrangementContours arrangement_contours(const ExactLayer& layer, FillRule rule,
   if (segments.empty()) return result;
   result.open_chains = close_open_chains(segments, left_of);
 
-  std::vector<Traits::X_monotone_curve_2> curves;
-  curves.reserve(segments.size());
+  // Segments with the same two end points become one curve carrying the sum of their weights
+  // (left to right), and a sum of zero no curve at all: it changes no face's winding number.
+  // CGAL would merge such overlaps itself, but pair by pair; a fan of repeated facets puts
+  // hundreds of copies of one segment into a layer.
+  struct Oriented {
+    const ExactPoint2* left;
+    const ExactPoint2* right;
+    long long weight;
+  };
+  std::vector<Oriented> oriented;
+  oriented.reserve(segments.size());
   for (const WeightedSegment& s : segments) {
     const int order = compare_xy(s.from, s.to);
     STRATA_ASSERT(order != 0, "zero-length segment handed to the arrangement");
-    curves.emplace_back(SegmentTraits::X_monotone_curve_2(to_kernel(s.from), to_kernel(s.to)),
-                        order < 0 ? s.weight : -s.weight);
+    if (order < 0) {
+      oriented.push_back({&s.from, &s.to, s.weight});
+    } else {
+      oriented.push_back({&s.to, &s.from, -s.weight});
+    }
+  }
+  const auto compare_ends = [](const Oriented& a, const Oriented& b) {
+    const int first = compare_xy(*a.left, *b.left);
+    return first != 0 ? first : compare_xy(*a.right, *b.right);
+  };
+  std::sort(oriented.begin(), oriented.end(),
+            [&](const Oriented& a, const Oriented& b) { return compare_ends(a, b) < 0; });
+  std::vector<Traits::X_monotone_curve_2> curves;
+  curves.reserve(oriented.size());
+  for (std::size_t i = 0; i < oriented.size();) {
+    long long weight = 0;
+    std::size_t k = i;
+    for (; k < oriented.size() && compare_ends(oriented[i], oriented[k]) == 0; ++k) {
+      weight += oriented[k].weight;
+    }
+    if (weight != 0) {
+      curves.emplace_back(SegmentTraits::X_monotone_curve_2(to_kernel(*oriented[i].left),
+                                                            to_kernel(*oriented[i].right)),
+                          weight);
+    }
+    i = k;
   }
   Arrangement arr;
   CGAL::insert(arr, curves.begin(), curves.end());
