@@ -144,6 +144,8 @@ struct RunRecord {
   std::uint32_t ref_layers_at_vertex = 0;
   /// Layers whose regions differ from a path's (symmetric difference above the tolerance).
   std::uint32_t ref_differing = 0;
+  /// Layers without a vertex on the plane that a path outlined (compared by region only).
+  std::uint32_t ref_outlined = 0;
   /// Layers whose plane holds a vertex and whose contours differ from either path's.
   std::uint32_t ref_differing_at_vertex = 0;
   double ref_hausdorff_exact_mm = 0.0;
@@ -343,6 +345,7 @@ RunRecord run_one(const strata::IndexedMesh& mesh, const std::string& grid_name,
     }
   }
   r.ref_differing = std::max(ref.layers_region_differing_exact, ref.layers_region_differing_fast);
+  r.ref_outlined = std::max(ref.layers_outlined_exact, ref.layers_outlined_fast);
   r.ref_hausdorff_exact_mm = ref.max_hausdorff_exact_mm;
   r.ref_hausdorff_fast_mm = ref.max_hausdorff_fast_mm;
   r.ref_symmetric_difference_mm2 =
@@ -434,7 +437,7 @@ std::string make_report(const std::vector<ModelRecord>& records,
   std::map<std::string, std::vector<std::string>> refusal_reasons;
   // The reference slicer.
   std::uint64_t ref_models = 0, ref_runs = 0, ref_layers = 0, ref_layers_at_vertex = 0,
-                ref_differing = 0, ref_differing_at_vertex = 0, ref_open = 0;
+                ref_differing = 0, ref_differing_at_vertex = 0, ref_open = 0, ref_outlined = 0;
   double ref_h_exact = 0.0, ref_h_fast = 0.0, ref_area = 0.0, ref_s = 0.0, ref_worst = 0.0;
   std::string ref_worst_model;
   std::map<std::string, std::uint64_t> ref_skipped_models;
@@ -454,6 +457,7 @@ std::string make_report(const std::vector<ModelRecord>& records,
       ref_layers += r.ref_layers;
       ref_layers_at_vertex += r.ref_layers_at_vertex;
       ref_differing += r.ref_differing;
+      ref_outlined += r.ref_outlined;
       ref_differing_at_vertex += r.ref_differing_at_vertex;
       ref_open += r.ref_open_polylines;
       const double h = std::max(r.ref_hausdorff_exact_mm, r.ref_hausdorff_fast_mm);
@@ -547,16 +551,18 @@ std::string make_report(const std::vector<ModelRecord>& records,
     out += fmt::format(
         "| reference slicer (CGAL Polygon_mesh_slicer, exact kernel) | {} of {} models compared "
         "({} runs, {} layers); where the plane holds no mesh vertex: worst Hausdorff distance "
-        "vs exact {} mm, vs fast {} mm{}, worst symmetric difference {} mm2, {} layers "
-        "whose regions differ; {} layers whose plane holds a vertex, {} of them differing (CGAL "
+        "vs exact {} mm, vs fast {} mm{} over the layers neither path outlined, worst symmetric "
+        "difference {} mm2 over all of them, {} layers whose regions differ, {} outlined "
+        "layers compared by region only; {} layers whose plane holds a vertex, {} of them "
+        "differing (CGAL "
         "keeps "
         "such a vertex on the plane, strata counts it above); {} open polylines; not run: {}; "
         "{:.1f} s |\n",
         ref_models, models, ref_runs, thousands(ref_layers), mm(ref_h_exact), mm(ref_h_fast),
         ref_worst_model.empty() ? std::string()
                                 : fmt::format(" (`{}`)", cell_text(ref_worst_model, 60)),
-        mm(ref_area), ref_differing, thousands(ref_layers_at_vertex), ref_differing_at_vertex,
-        ref_open,
+        mm(ref_area), ref_differing, thousands(ref_outlined), thousands(ref_layers_at_vertex),
+        ref_differing_at_vertex, ref_open,
         skipped.empty() ? std::string("none") : fmt::format("{}", fmt::join(skipped, ", ")), ref_s);
   }
   out += fmt::format("| corpus files skipped (over {} bytes) | {} |\n", thousands(o.max_bytes),
@@ -609,17 +615,19 @@ std::string make_report(const std::vector<ModelRecord>& records,
       "Cells: summed over the model's runs. Hausdorff: the largest distance between the two "
       "paths' contours over the layers without open chains (mm); sym. diff.: the largest area "
       "of the symmetric difference of the regions they bound under the fill rule, over the same "
-      "layers (exact overlay, mm2). A large Hausdorff distance with a zero area means the "
-      "contour sets differ but bound the same region: where shells overlap or cross, the fast "
-      "path keeps every shell's loop while the exact path, on its arrangement layers, gives the "
-      "outline of the filled region. Volume errors, from the "
-      "aligned `nonzero` run, relative to the mesh's exact signed volume: the fast path's cells "
-      "(against its magnitude), and the exact path's contours (sum of the layers' net signed "
-      "areas x dz, so an inverted shell counts negative, like the mesh volume). These are "
-      "discretisation errors of coarse grids, not disagreements. Times: summed over the "
-      "runs. ref Hausdorff: CGAL's Polygon_mesh_slicer (exact kernel) on closed, consistently "
-      "oriented 2-manifolds, the largest Hausdorff distance of its contours to the exact "
-      "path's / the fast path's over the layers whose plane holds no mesh vertex (mm), with "
+      "layers (exact overlay, mm2). Where a layer's loops are open, cross, touch or are "
+      "misnested, both paths give the outline of the region the fill rule fills, so their "
+      "contours are compared like any other. Volume errors, from the aligned `nonzero` run, "
+      "relative to the magnitude of the mesh's exact signed volume: the fast path's cells, and "
+      "the exact path's contours (sum of the layers' net signed areas x dz; an outlined layer "
+      "counts its filled region, so an inside-out shell counts positive, and a mesh whose "
+      "shells cancel in the signed volume shows a large error). These are discretisation "
+      "errors of coarse grids and defects of the meshes, not disagreements between the paths. "
+      "Times: summed over the runs. ref Hausdorff: CGAL's Polygon_mesh_slicer (exact kernel) "
+      "on closed, consistently oriented 2-manifolds, the largest Hausdorff distance of its "
+      "contours to the exact path's / the fast path's over the layers whose plane holds no mesh "
+      "vertex and which the path did not outline (an outline drops the walls between touching "
+      "loops that the slicer keeps; those layers are compared by region) (mm), with "
       "the number of layers whose plane holds a vertex and differ there (legitimately: CGAL "
       "keeps a vertex on the plane, strata counts it above); otherwise why it did not run.\n\n";
   out +=
@@ -660,10 +668,12 @@ std::string make_report(const std::vector<ModelRecord>& records,
     std::string cells_vol = "n/a", contour_vol = "n/a";
     if (!m.runs.empty()) {
       const RunRecord& a = m.runs.front();
-      // Cells have no sign: compared with the volume's magnitude (an inverted shell has a
-      // negative signed volume); contours carry the facets' orientation like the mesh volume.
+      // Cells have no sign, and an inside-out shell's layers are outlined (their filled region
+      // counts positive): both are compared with the volume's magnitude.
       cells_vol = percent(a.fast_cell_volume_mm3, std::fabs(a.mesh_volume_mm3));
-      if (a.exact_ran) contour_vol = percent(a.exact_contour_volume_mm3, a.mesh_volume_mm3);
+      if (a.exact_ran) {
+        contour_vol = percent(a.exact_contour_volume_mm3, std::fabs(a.mesh_volume_mm3));
+      }
     }
     std::string ref_text;
     if (ref_ran) {

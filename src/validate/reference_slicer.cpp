@@ -367,6 +367,7 @@ struct ReferenceComparison::State {
     AreaMethod method = AreaMethod::Identical;
     bool differs = false;
     bool region_differs = false;
+    bool outlined = false;  ///< the path outlined the layer: compared by region only
   };
 
   Against compare(const ReferenceSection& ref, const LayerContours& other, std::uint32_t k);
@@ -406,7 +407,10 @@ ReferenceComparison::State::Against ReferenceComparison::State::compare(const Re
     }
   }
   out.region_differs = out.area_mm2 > area_tolerance;
-  out.differs = !(out.hausdorff_mm <= tolerance) || out.region_differs;
+  out.outlined = other.outline;
+  // An outline has no reason to share the slicer's loops (it drops the walls between crossing
+  // or touching loops); only the region it bounds is comparable.
+  out.differs = out.region_differs || (!out.outlined && !(out.hausdorff_mm <= tolerance));
   return out;
 }
 
@@ -454,13 +458,18 @@ void ReferenceComparison::add_layer(const LayerResult* fast, const LayerResult* 
   const bool at_vertex = l.vertex_on_plane();
   const auto fold = [&](const State::Against& a, double& max_h, double& max_a, double& max_h_all,
                         double& max_a_all, std::uint32_t& differing,
-                        std::uint32_t& differing_at_vertex, std::uint32_t& region_differing) {
+                        std::uint32_t& differing_at_vertex, std::uint32_t& region_differing,
+                        std::uint32_t& outlined) {
     max_h_all = std::max(max_h_all, a.hausdorff_mm);
     max_a_all = std::max(max_a_all, a.area_mm2);
     if (at_vertex) {
       if (a.differs) ++differing_at_vertex;
     } else {
-      max_h = std::max(max_h, a.hausdorff_mm);
+      if (a.outlined) {
+        ++outlined;
+      } else {
+        max_h = std::max(max_h, a.hausdorff_mm);
+      }
       max_a = std::max(max_a, a.area_mm2);
       if (a.differs) ++differing;
       if (a.region_differs) ++region_differing;
@@ -475,7 +484,7 @@ void ReferenceComparison::add_layer(const LayerResult* fast, const LayerResult* 
     fold(a, f.max_hausdorff_exact_mm, f.max_symmetric_difference_exact_mm2,
          f.max_hausdorff_exact_all_mm, f.max_symmetric_difference_exact_all_mm2,
          f.layers_differing_exact, f.layers_differing_exact_at_vertex,
-         f.layers_region_differing_exact);
+         f.layers_region_differing_exact, f.layers_outlined_exact);
   }
   if (fast) {
     const State::Against a = s.compare(section, fast->contours, k);
@@ -485,8 +494,8 @@ void ReferenceComparison::add_layer(const LayerResult* fast, const LayerResult* 
     l.differs_from_fast = a.differs;
     fold(a, f.max_hausdorff_fast_mm, f.max_symmetric_difference_fast_mm2,
          f.max_hausdorff_fast_all_mm, f.max_symmetric_difference_fast_all_mm2,
-         f.layers_differing_fast, f.layers_differing_fast_at_vertex,
-         f.layers_region_differing_fast);
+         f.layers_differing_fast, f.layers_differing_fast_at_vertex, f.layers_region_differing_fast,
+         f.layers_outlined_fast);
   }
   ++f.layers_compared;
   if (at_vertex) ++f.layers_vertex_on_plane;

@@ -98,6 +98,8 @@ json reference_json(const ReferenceSlicerFigures& f) {
           {"layers_differing_fast_at_vertex", f.layers_differing_fast_at_vertex},
           {"layers_region_differing_exact", f.layers_region_differing_exact},
           {"layers_region_differing_fast", f.layers_region_differing_fast},
+          {"layers_outlined_exact", f.layers_outlined_exact},
+          {"layers_outlined_fast", f.layers_outlined_fast},
           {"layers_overlay_skipped", f.layers_overlay_skipped},
           {"polylines", f.polylines},
           {"open_polylines", f.open_polylines},

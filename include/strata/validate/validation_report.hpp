@@ -250,6 +250,12 @@ struct ReferenceSlicerFigures {
   /// a path gives the outline of crossing or touching loops.
   std::uint32_t layers_region_differing_exact = 0;
   std::uint32_t layers_region_differing_fast = 0;
+  /// Of the layers whose plane contains no vertex, those the path outlined (its loops are open,
+  /// cross, touch or are misnested, so its contours are the outline of the filled region, not
+  /// the loops the slicer gives): compared by region only; a layer among them counts as
+  /// differing when its region does, and its Hausdorff distance only in the "every layer" figures.
+  std::uint32_t layers_outlined_exact = 0;
+  std::uint32_t layers_outlined_fast = 0;
   /// Layers whose overlay was skipped (they differ at rounding level only; see
   /// ValidateOptions::max_overlay_layers).
   std::uint32_t layers_overlay_skipped = 0;
@@ -259,7 +265,8 @@ struct ReferenceSlicerFigures {
   std::uint64_t isolated_points = 0;
   std::uint64_t open_after_joining = 0;
 
-  /// Over the layers whose plane contains no vertex.
+  /// Over the layers whose plane contains no vertex (Hausdorff: and which the path did not
+  /// outline).
   double max_hausdorff_exact_mm = 0.0;
   double max_hausdorff_fast_mm = 0.0;
   double max_symmetric_difference_exact_mm2 = 0.0;
