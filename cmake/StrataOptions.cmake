@@ -11,13 +11,17 @@ if(STRATA_SANITIZE)
   target_compile_options(strata_settings INTERFACE -fsanitize=${STRATA_SANITIZE} -fno-omit-frame-pointer
                                                    -fno-sanitize-recover=all)
   target_link_options(strata_settings INTERFACE -fsanitize=${STRATA_SANITIZE})
+  if(STRATA_SANITIZE_EXCLUDE)
+    target_compile_options(strata_settings INTERFACE -fno-sanitize=${STRATA_SANITIZE_EXCLUDE})
+    target_link_options(strata_settings INTERFACE -fno-sanitize=${STRATA_SANITIZE_EXCLUDE})
+  endif()
 endif()
 # Fuzzing: coverage instrumentation everywhere, the libFuzzer runtime only in the fuzz targets
 # (fuzz/CMakeLists.txt adds -fsanitize=fuzzer to them).
 if(STRATA_BUILD_FUZZ)
   if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
     message(FATAL_ERROR "STRATA_BUILD_FUZZ needs clang (libFuzzer); configure with "
-                        "-DCMAKE_CXX_COMPILER=clang++ or the `fuzz` preset")
+                        "-DCMAKE_CXX_COMPILER=clang++ or the `asan` preset")
   endif()
   target_compile_options(strata_settings INTERFACE -fsanitize=fuzzer-no-link)
 endif()

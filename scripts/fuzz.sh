@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of fuzz/ (clang, AddressSanitizer + UndefinedBehaviorSanitizer,
-# preset `fuzz`) and runs each for SECONDS on a copy of its seed corpus under build/fuzz/run/
-# (the repository is never written). Fails when a target finds a crash, a leak, a timeout or an
-# out-of-memory input; the input is left in build/fuzz/run/<target>/artifacts/.
+# Builds the libFuzzer targets of fuzz/ (preset `asan`: clang, AddressSanitizer +
+# UndefinedBehaviorSanitizer) and runs each for SECONDS on a copy of its seed corpus under
+# build/asan/fuzz-run/ (the repository is never written). Fails when a target finds a crash, a
+# leak, a timeout or an out-of-memory input; the input is left in
+# build/asan/fuzz-run/<target>/artifacts/.
 # Usage: scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]   (default 60 seconds, every target)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,27 +14,12 @@ if ((${#targets[@]} == 0)); then
   targets=(fuzz_stl_binary fuzz_stl_ascii fuzz_obj fuzz_off fuzz_ply fuzz_cells)
 fi
 
-bash scripts/setup.sh
-# clang and the libFuzzer runtime (Debian 12: clang 14, runtime in libclang-rt-14-dev).
-packages=(clang libclang-rt-14-dev)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "strata fuzz: installing ${missing[*]}"
-  sudo_cmd=()
-  if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
-  export DEBIAN_FRONTEND=noninteractive
-  "${sudo_cmd[@]}" apt-get update -qq
-  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
-fi
+bash scripts/setup.sh sanitizers
+cmake --preset asan > /dev/null
+cmake --build --preset asan --target strata_fuzzers -j "$(nproc)"
 
-cmake --preset fuzz > /dev/null
-cmake --build --preset fuzz -j "$(nproc)"
-
-export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$PWD/cmake/ubsan.supp"
-run_root=build/fuzz/run
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+run_root=build/asan/fuzz-run
 failed=()
 for t in "${targets[@]}"; do
   dir="$run_root/$t"
@@ -45,7 +31,7 @@ for t in "${targets[@]}"; do
   dict="fuzz/${t#fuzz_}.dict"
   if [ -f "$dict" ]; then args+=(-dict="$dict"); fi
   echo "strata fuzz: $t for ${seconds}s"
-  if "build/fuzz/fuzz/$t" "${args[@]}" > "$dir/log" 2>&1; then
+  if "build/asan/fuzz/$t" "${args[@]}" > "$dir/log" 2>&1; then
     grep -E '^#[0-9]+[[:space:]]+DONE' "$dir/log" | tail -1 || true
   else
     echo "strata fuzz: $t FAILED; the input is in $dir/artifacts/, the log in $dir/log:"

@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
 # Installs strata's build dependencies from Debian 12's packages when they are missing.
+# Usage: scripts/setup.sh [sanitizers]   (`sanitizers` adds clang and its sanitizer and libFuzzer
+# runtimes, for the `asan` preset)
 set -euo pipefail
 
 packages=(
@@ -8,6 +10,10 @@ packages=(
   libpng-dev zlib1g-dev libfmt-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
+if [ "${1:-}" = sanitizers ]; then
+  # Debian 12: clang 14; the ASan, UBSan and libFuzzer runtimes are in libclang-rt-14-dev.
+  packages+=(clang libclang-rt-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

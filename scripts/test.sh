@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# From a fresh Debian 12 machine: install what is missing, build with warnings as errors, and run
-# the whole test suite through CTest (unit, property and corpus tests).
+# From a fresh Debian 12 machine: install what is missing (clang and its sanitizer runtimes
+# included), build the `asan` preset (clang -O1, AddressSanitizer + UndefinedBehaviorSanitizer,
+# warnings as errors) and run the whole test suite under it through CTest (unit, property and
+# corpus tests, and the quick validation run). Any sanitizer report fails the test it occurs in.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
-bash scripts/build.sh ci
-ctest --preset ci
+bash scripts/setup.sh sanitizers
+bash scripts/build.sh asan
+ctest --preset asan

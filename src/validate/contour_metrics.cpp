@@ -28,7 +28,6 @@ using ExactFT = Kernel::Exact_kernel::FT;
 struct WindingDelta {
   int a = 0;
   int b = 0;
-  friend bool operator==(const WindingDelta&, const WindingDelta&) = default;
 };
 
 struct MergeDeltas {
