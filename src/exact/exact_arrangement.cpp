@@ -94,11 +94,23 @@ std::uint32_t close_open_chains(std::vector<WeightedSegment>& segments, double l
     for (; k < unbalanced.size() &&
            compare_xy(ExactPoint2{left, unbalanced[k].first->y}, ExactPoint2{left, y}) == 0;
          ++k) {
-      // An end point on x_left needs no edge: the vertical pieces meet it there.
-      if (compare_xy(ExactPoint2{left, y}, *unbalanced[k].first) != 0) {
-        added.push_back({ExactPoint2{left, y}, *unbalanced[k].first, unbalanced[k].second});
-      }
       here += unbalanced[k].second;
+    }
+    // The edges from (x_left, y) to each end point at this y, as pieces between consecutive end
+    // points: the piece ending at the i-th carries the weights of the i-th and every later one.
+    // The same winding numbers, without the overlapping edges (a horizontal side of a section
+    // with hundreds of end points on it would give hundreds of mutually overlapping edges). An
+    // end point on x_left needs no edge: the vertical pieces meet it there.
+    std::sort(unbalanced.begin() + static_cast<std::ptrdiff_t>(i),
+              unbalanced.begin() + static_cast<std::ptrdiff_t>(k),
+              [](const auto& a, const auto& b) { return compare_xy(*a.first, *b.first) < 0; });
+    long long remaining = here;
+    ExactPoint2 from{left, y};
+    for (std::size_t j = i; j < k; ++j) {
+      const ExactPoint2& to = *unbalanced[j].first;
+      if (remaining != 0 && compare_xy(from, to) != 0) added.push_back({from, to, remaining});
+      remaining -= unbalanced[j].second;
+      from = to;
     }
     carried -= here;  // the rays leaving this point take `here`, the piece above takes the rest
     if (carried != 0 && k < unbalanced.size()) {
