@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "exact/exact_soup_internal.hpp"
+#include "exact/orient_soup_visitor_internal.hpp"
 
 namespace strata::exact::detail {
 namespace {
@@ -23,22 +24,6 @@ using Mesh = CGAL::Surface_mesh<Point3>;
 using Polygon = std::vector<std::size_t>;
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-
-/// Counts what orient_polygon_soup does (it copies the visitor: counters live outside).
-struct OrientCounters {
-  std::uint64_t reversed = 0;
-  std::set<std::pair<std::size_t, std::size_t>> non_manifold_edges;
-};
-
-struct OrientVisitor : PMP::Default_orientation_visitor {
-  OrientCounters* counters = nullptr;
-
-  explicit OrientVisitor(OrientCounters* c) : counters(c) {}
-  void non_manifold_edge(std::size_t a, std::size_t b, std::size_t) {
-    counters->non_manifold_edges.emplace(std::min(a, b), std::max(a, b));
-  }
-  void polygon_orientation_reversed(std::size_t) { ++counters->reversed; }
-};
 
 /// A facet by the set of its corner positions (+0 and -0 alike).
 using FacetKey = std::array<double, 9>;
@@ -106,9 +91,10 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
   d.report.points_merged = input.vertices.size() - points.size();
   d.report.polygons_removed = input.triangles.size() - polygons.size();
 
-  OrientCounters counters;
+  OrientSoupCounts counters;
   const std::size_t points_before = points.size();
-  PMP::orient_polygon_soup(points, polygons, CGAL::parameters::visitor(OrientVisitor{&counters}));
+  PMP::orient_polygon_soup(points, polygons,
+                           CGAL::parameters::visitor(OrientSoupVisitor{&counters}));
   d.report.points_duplicated = points.size() - points_before;
   d.report.polygons_reversed = counters.reversed;
   d.report.non_manifold_edges = counters.non_manifold_edges.size();

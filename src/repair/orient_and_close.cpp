@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "diagnose/exact_geometry_internal.hpp"
+#include "exact/orient_soup_visitor_internal.hpp"
 #include "repair/repair_internal.hpp"
 
 namespace strata::repair::detail {
@@ -44,24 +45,6 @@ using Polygon = std::vector<std::size_t>;
 constexpr std::size_t kMaxCubicHoleEdges = 300;
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
-
-/// Counts what orient_polygon_soup reports (it copies the visitor: the counters live outside).
-struct OrientCounters {
-  std::set<std::size_t> non_manifold_vertices;
-  std::set<std::pair<std::size_t, std::size_t>> non_manifold_edges;
-};
-
-struct OrientVisitor : PMP::Default_orientation_visitor {
-  OrientCounters* counters = nullptr;
-
-  explicit OrientVisitor(OrientCounters* c) : counters(c) {}
-  void non_manifold_edge(std::size_t a, std::size_t b, std::size_t) {
-    counters->non_manifold_edges.emplace(std::min(a, b), std::max(a, b));
-  }
-  void non_manifold_vertex(std::size_t v, std::size_t) {
-    counters->non_manifold_vertices.insert(v);
-  }
-};
 
 Vec3 to_vec3(const Point& p) {
   // Epick points hold the doubles they were built from: exact.
@@ -442,9 +425,10 @@ std::vector<OutputFacet> orient_and_close(const CleanSoup& clean, const RepairOp
     return {};
   }
 
-  OrientCounters counters;
+  exact::detail::OrientSoupCounts counters;
   const std::size_t points_before = points.size();
-  PMP::orient_polygon_soup(points, polygons, CGAL::parameters::visitor(OrientVisitor{&counters}));
+  PMP::orient_polygon_soup(points, polygons,
+                           CGAL::parameters::visitor(exact::detail::OrientSoupVisitor{&counters}));
   log.vertex_copies_added = points.size() - points_before;
   log.non_manifold_vertices_split = counters.non_manifold_vertices.size();
   log.non_manifold_edges = counters.non_manifold_edges.size();

@@ -29,6 +29,7 @@
 #include <set>
 #include <utility>
 
+#include "exact/orient_soup_visitor_internal.hpp"
 #include "strata/validate/contour_metrics.hpp"
 #include "validate/model_scale_internal.hpp"
 #include "validate/reference_slicer_internal.hpp"
@@ -97,21 +98,6 @@ double nearest_double(const Kernel::FT& value) {
   std::memcpy(&bits, &d, sizeof bits);
   return (bits & 1) == 0 ? d : away;
 }
-
-struct OrientCounters {
-  std::uint64_t reversed = 0;
-  std::set<std::pair<std::size_t, std::size_t>> non_manifold_edges;
-};
-
-struct OrientVisitor : PMP::Default_orientation_visitor {
-  OrientCounters* counters = nullptr;
-
-  explicit OrientVisitor(OrientCounters* c) : counters(c) {}
-  void non_manifold_edge(std::size_t a, std::size_t b, std::size_t) {
-    counters->non_manifold_edges.emplace(std::min(a, b), std::max(a, b));
-  }
-  void polygon_orientation_reversed(std::size_t) { ++counters->reversed; }
-};
 
 double shoelace(const std::vector<Point2>& points) {
   double twice = 0.0;
@@ -234,9 +220,10 @@ void ReferenceSlicer::Impl::build(const IndexedMesh& input) {
     // non-manifold vertices and edges, and only reverses facets otherwise.
     std::vector<Point3> copy_points = points;
     std::vector<Polygon> copy_polygons = polygons;
-    OrientCounters counters;
+    exact::detail::OrientSoupCounts counters;
     const bool oriented = PMP::orient_polygon_soup(
-        copy_points, copy_polygons, CGAL::parameters::visitor(OrientVisitor{&counters}));
+        copy_points, copy_polygons,
+        CGAL::parameters::visitor(exact::detail::OrientSoupVisitor{&counters}));
     const std::size_t duplicated = copy_points.size() - points.size();
     if (!oriented || duplicated > 0 || !counters.non_manifold_edges.empty()) {
       refuse(ReferenceSkip::NonManifold,
