@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -18,6 +17,7 @@
 #include <vector>
 
 #include "export/sink_support_internal.hpp"
+#include "strata/io/scan_number.hpp"
 
 namespace strata::io {
 
@@ -153,15 +153,6 @@ std::vector<std::string_view> split_words(std::string_view line) {
   return words;
 }
 
-template <class T>
-bool parse_number(std::string_view text, T& value) {
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  if (first != last && *first == '+') ++first;  // from_chars rejects a leading '+'
-  const auto result = std::from_chars(first, last, value);
-  return result.ec == std::errc{} && result.ptr == last;
-}
-
 class LineReader {
  public:
   explicit LineReader(const std::filesystem::path& path)
@@ -183,6 +174,20 @@ class LineReader {
   std::string name_;
   std::uint64_t line_no_ = 0;
 };
+
+/// A whole number of the header or a layer line, or the bad-number Error at the current line.
+Result<std::uint32_t> scan_uint32(std::string_view word, const LineReader& in) {
+  const ScannedNumber<std::uint64_t> scanned = scan_unsigned(word, NumberType::UInt32);
+  if (!scanned.ok()) return bad_number(in.here(), word, scanned);
+  return static_cast<std::uint32_t>(scanned.value);
+}
+
+/// A real number of the header or a layer line (read as double, as every text format but STL).
+Result<double> scan_double(std::string_view word, const LineReader& in) {
+  const ScannedNumber<double> scanned = scan_real(word);
+  if (!scanned.ok()) return bad_number(in.here(), word, scanned);
+  return scanned.value;
+}
 
 bool is_blank(std::string_view line) {
   return line.find_first_not_of(" \t") == std::string_view::npos;
@@ -227,29 +232,33 @@ Result<CellsHeader> read_ascii(const std::filesystem::path& path, std::uint64_t 
       }
       return {};
     };
-    bool parsed = true;
+    // Scans the key's values into their fields, stopping at the first bad one.
+    auto read_values = [&](auto scan, auto... fields) -> Result<void> {
+      std::size_t w = 1;
+      for (auto* field : {fields...}) {
+        const auto value = scan(words[w++], in);
+        if (!value) return value.error();
+        *field = *value;
+      }
+      return {};
+    };
     if (key == "grid") {
       if (auto ok = expect(have_grid, 3, "grid nx ny nz"); !ok) return ok.error();
-      parsed = parse_number(words[1], g.nx) && parse_number(words[2], g.ny) &&
-               parse_number(words[3], g.nz);
-      if (!parsed) return bad_input(in.here(), "expected 'grid nx ny nz' with whole numbers");
+      if (auto ok = read_values(scan_uint32, &g.nx, &g.ny, &g.nz); !ok) return ok.error();
     } else if (key == "origin") {
       if (auto ok = expect(have_origin, 3, "origin x0 y0 z0"); !ok) return ok.error();
-      parsed = parse_number(words[1], g.x0) && parse_number(words[2], g.y0) &&
-               parse_number(words[3], g.z0);
+      if (auto ok = read_values(scan_double, &g.x0, &g.y0, &g.z0); !ok) return ok.error();
     } else if (key == "spacing") {
       if (auto ok = expect(have_spacing, 3, "spacing dx dy dz"); !ok) return ok.error();
-      parsed = parse_number(words[1], g.dx) && parse_number(words[2], g.dy) &&
-               parse_number(words[3], g.dz);
+      if (auto ok = read_values(scan_double, &g.dx, &g.dy, &g.dz); !ok) return ok.error();
     } else if (key == "shell") {
       if (auto ok = expect(have_shell, 1, "shell t"); !ok) return ok.error();
-      parsed = parse_number(words[1], h.shell_mm);
+      if (auto ok = read_values(scan_double, &h.shell_mm); !ok) return ok.error();
     } else {
       return bad_input(in.here(), fmt::format("unknown header key '{}'; expected grid, origin, "
                                               "spacing, shell or the first 'layer' line",
                                               key));
     }
-    if (!parsed) return bad_input(in.here(), fmt::format("'{}' needs numbers: '{}'", key, line));
   }
   const char* missing = !have_grid      ? "grid"
                         : !have_origin  ? "origin"
@@ -295,15 +304,15 @@ Result<CellsHeader> read_ascii(const std::filesystem::path& path, std::uint64_t 
       }
     }
     const auto words = split_words(line);
-    double z = 0.0;
-    std::uint32_t index = 0;
-    if (words.size() != 3 || words[0] != "layer" || !parse_number(words[1], index) ||
-        words[2].substr(0, 2) != "z=" || !parse_number(words[2].substr(2), z)) {
+    if (words.size() != 3 || words[0] != "layer" || words[2].substr(0, 2) != "z=") {
       return bad_input(in.here(), fmt::format("expected 'layer {} z=<number>'", k));
     }
-    if (index != k) {
+    const Result<std::uint32_t> index = scan_uint32(words[1], in);
+    if (!index) return index.error();
+    if (const Result<double> z = scan_double(words[2].substr(2), in); !z) return z.error();
+    if (*index != k) {
       return bad_input(in.here(),
-                       fmt::format("layer {} found where layer {} was expected", index, k));
+                       fmt::format("layer {} found where layer {} was expected", *index, k));
     }
     for (std::uint32_t j = 0; j < g.ny; ++j) {
       if (!in.next(line)) {

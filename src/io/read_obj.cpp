@@ -9,15 +9,12 @@
 // v/vt/vn corners; negative indices count back from the last vertex). Everything else is skipped.
 #include <fmt/format.h>
 
-#include <charconv>
-#include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <string>
 #include <string_view>
-#include <system_error>
 
 #include "io/read_mesh_internal.hpp"
+#include "strata/io/scan_number.hpp"
 
 namespace strata::io::detail {
 namespace {
@@ -37,25 +34,6 @@ std::string quote(std::string_view text) {
   return out + "'";
 }
 
-/// Parses a whole token as a double (read as double, not rounded: SPEC §2).
-bool parse_double(std::string_view token, double& out) {
-  const char* begin = token.data();
-  const char* end = begin + token.size();
-  if (begin != end && *begin == '+') {
-    ++begin;
-    if (begin == end || *begin == '-' || *begin == '+') return false;
-  }
-  if (begin == end) return false;
-  const auto [ptr, ec] = std::from_chars(begin, end, out, std::chars_format::general);
-  if (ptr != end) return false;
-  if (ec == std::errc::result_out_of_range) {
-    const std::string copy(begin, end);
-    out = std::strtod(copy.c_str(), nullptr);
-    return true;  // overflow gives infinity, which the caller rejects as non-finite
-  }
-  return ec == std::errc();
-}
-
 class ObjReader {
  public:
   ObjReader(std::string_view text, std::string_view name, const ReadLimits& limits)
@@ -72,9 +50,9 @@ class ObjReader {
   /// The next logical line (continuations joined into `joined_`); false at the end.
   bool next_line(std::string_view& line);
   bool next_physical_line(std::string_view& line);
+  std::string location() const { return fmt::format("{}:{}", name_, statement_line_); }
   Error error_here(std::string message) const {
-    return Error{ErrorCode::BadInput, std::move(message),
-                 fmt::format("{}:{}", name_, statement_line_)};
+    return Error{ErrorCode::BadInput, std::move(message), location()};
   }
   Result<void> read_vertex(std::string_view rest);
   Result<void> read_face(std::string_view rest);
@@ -151,13 +129,9 @@ Result<void> ObjReader::read_vertex(std::string_view rest) {
       return error_here(
           fmt::format("vertex has {} coordinate{}, expected 3", k, k == 1 ? "" : "s"));
     }
-    if (!parse_double(token, p[k])) {
-      return error_here(fmt::format("vertex coordinate {} is not a number", quote(token)));
-    }
-    if (!std::isfinite(p[k])) {
-      return error_here(fmt::format(
-          "vertex coordinate {} is not finite; NaN and infinity cannot be sliced", quote(token)));
-    }
+    const ScannedNumber<double> scanned = scan_real(token);  // double, not rounded: SPEC §2
+    if (!scanned.ok()) return bad_number(location(), token, scanned);
+    p[k] = scanned.value;
   }
   soup_.points.push_back(p);
   return {};
@@ -167,14 +141,13 @@ Result<void> ObjReader::read_face(std::string_view rest) {
   const std::size_t first = soup_.corners.size();
   for (std::string_view corner = next_token(rest); !corner.empty(); corner = next_token(rest)) {
     const std::string_view index_text = corner.substr(0, corner.find('/'));
-    long long index = 0;
-    const char* begin = index_text.data();
-    const char* end = begin + index_text.size();
-    const auto [ptr, ec] = std::from_chars(begin, end, index);
-    if (ec != std::errc() || ptr != end || begin == end) {
-      return error_here(fmt::format("face corner {} is not a vertex index", quote(corner)));
+    if (index_text.empty()) {
+      return error_here(fmt::format("face corner {} has no vertex index", quote(corner)));
     }
-    const auto defined = static_cast<long long>(soup_.points.size());
+    const ScannedNumber<std::int64_t> scanned = scan_signed(index_text, NumberType::Int64);
+    if (!scanned.ok()) return bad_number(location(), index_text, scanned);
+    const std::int64_t index = scanned.value;
+    const auto defined = static_cast<std::int64_t>(soup_.points.size());
     if (index == 0) {
       return error_here("face uses vertex index 0; OBJ indices count from 1");
     }

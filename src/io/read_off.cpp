@@ -12,17 +12,15 @@
 #include <fmt/format.h>
 
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <utility>
 
 #include "io/read_mesh_internal.hpp"
+#include "strata/io/scan_number.hpp"
 
 namespace strata::io::detail {
 namespace {
@@ -93,29 +91,6 @@ class OffTokens {
   bool too_long_ = false;
 };
 
-bool parse_double(std::string_view token, double& out) {
-  const char* begin = token.data();
-  const char* end = begin + token.size();
-  if (begin != end && *begin == '+') ++begin;
-  if (begin == end) return false;
-  const auto [ptr, ec] = std::from_chars(begin, end, out, std::chars_format::general);
-  if (ptr != end) return false;
-  if (ec == std::errc::result_out_of_range) {
-    out = std::strtod(std::string(begin, end).c_str(), nullptr);
-    return true;
-  }
-  return ec == std::errc();
-}
-
-template <class Int>
-bool parse_integer(std::string_view token, Int& out) {
-  const char* begin = token.data();
-  const char* end = begin + token.size();
-  if (begin != end && *begin == '+') ++begin;
-  const auto [ptr, ec] = std::from_chars(begin, end, out);
-  return begin != end && ec == std::errc() && ptr == end;
-}
-
 std::string shown(std::string_view token) {
   std::string out;
   for (const char c : token.substr(0, 40)) {
@@ -159,6 +134,9 @@ Result<TriangleSoup> read_off_bytes(std::string_view bytes, std::string_view nam
   auto error = [&](std::string message) {
     return Error{ErrorCode::BadInput, std::move(message),
                  fmt::format("{}:{}", name, tokens.line())};
+  };
+  auto number_error = [&](std::string_view token, const auto& scanned) {
+    return bad_number(fmt::format("{}:{}", name, tokens.line()), token, scanned);
   };
   auto token_or_end = [&](std::string_view what) -> Result<std::string_view> {
     const std::string_view token = tokens.next();
@@ -206,9 +184,12 @@ Result<TriangleSoup> read_off_bytes(std::string_view bytes, std::string_view nam
     if (*dim == "BINARY") {
       return Error{ErrorCode::BadInput, "unsupported format: binary OFF", std::string(name)};
     }
-    if (!parse_integer(*dim, coordinates) || coordinates < 3 || coordinates > 16) {
+    const ScannedNumber<std::uint64_t> scanned = scan_unsigned(*dim, NumberType::UInt64);
+    if (!scanned.ok()) return number_error(*dim, scanned);
+    if (scanned.value < 3 || scanned.value > 16) {
       return error(fmt::format("nOFF dimension '{}' is not an integer from 3 to 16", shown(*dim)));
     }
+    coordinates = static_cast<std::size_t>(scanned.value);
   }
   if (keyword.homogeneous) ++coordinates;
 
@@ -219,10 +200,9 @@ Result<TriangleSoup> read_off_bytes(std::string_view bytes, std::string_view nam
     if (k == 0 && *t == "BINARY") {
       return Error{ErrorCode::BadInput, "unsupported format: binary OFF", std::string(name)};
     }
-    if (!parse_integer(*t, counts[k])) {
-      return error(
-          fmt::format("expected the {} count, found '{}'", k == 0 ? "vertex" : "face", shown(*t)));
-    }
+    const ScannedNumber<std::uint64_t> scanned = scan_unsigned(*t, NumberType::UInt64);
+    if (!scanned.ok()) return number_error(*t, scanned);
+    counts[k] = scanned.value;
   }
   tokens.skip_line();  // the edge count, when present, is not needed
   // A vertex takes at least 6 bytes ("0 0 0\n"), a face 2: larger counts are lies and must not
@@ -245,9 +225,9 @@ Result<TriangleSoup> read_off_bytes(std::string_view bytes, std::string_view nam
     for (std::size_t k = 0; k < coordinates; ++k) {
       Result<std::string_view> t = token_or_end(fmt::format("vertex {}", v));
       if (!t) return t.error();
-      if (!parse_double(*t, values[k])) {
-        return error(fmt::format("vertex {} coordinate '{}' is not a number", v, shown(*t)));
-      }
+      const ScannedNumber<double> scanned = scan_real(*t);  // double, not rounded: SPEC §2
+      if (!scanned.ok()) return number_error(*t, scanned);
+      values[k] = scanned.value;
     }
     tokens.skip_line();  // normals, colours, texture coordinates
     std::array<double, 3> p{values[0], values[1], values[2]};
@@ -256,11 +236,12 @@ Result<TriangleSoup> read_off_bytes(std::string_view bytes, std::string_view nam
       if (w == 0.0) return error(fmt::format("vertex {} has the homogeneous weight 0", v));
       for (double& c : p) c /= w;
     }
+    // Every number read is finite; only the division by a tiny weight can overflow.
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
-      return error(
-          fmt::format("vertex {} has a non-finite coordinate; NaN and infinity cannot "
-                      "be sliced",
-                      v));
+      return error(fmt::format(
+          "vertex {} divided by its weight {} is too large for a double; NaN and infinity cannot "
+          "be sliced",
+          v, values[coordinates - 1]));
     }
     polygons.points.push_back(p);
   }
@@ -271,11 +252,9 @@ Result<TriangleSoup> read_off_bytes(std::string_view bytes, std::string_view nam
     Result<std::string_view> t = token_or_end(fmt::format("face {}", f));
     if (!t) return t.error();
     const std::size_t line = tokens.line();
-    std::uint64_t n = 0;
-    if (!parse_integer(*t, n)) {
-      return error(
-          fmt::format("face {}: corner count '{}' is not a non-negative integer", f, shown(*t)));
-    }
+    const ScannedNumber<std::uint64_t> corner_count = scan_unsigned(*t, NumberType::UInt64);
+    if (!corner_count.ok()) return number_error(*t, corner_count);
+    const std::uint64_t n = corner_count.value;
     if (n > tokens.remaining() / 2 + 1) {
       return error(fmt::format(
           "face {} declares {} corners, more than the rest of the file holds (truncated?)", f, n));
@@ -283,12 +262,9 @@ Result<TriangleSoup> read_off_bytes(std::string_view bytes, std::string_view nam
     for (std::uint64_t c = 0; c < n; ++c) {
       Result<std::string_view> index_token = token_or_end(fmt::format("a corner of face {}", f));
       if (!index_token) return index_token.error();
-      std::size_t index = 0;
-      if (!parse_integer(*index_token, index)) {
-        return error(fmt::format("face {}: vertex index '{}' is not a non-negative integer", f,
-                                 shown(*index_token)));
-      }
-      polygons.corners.push_back(index);
+      const ScannedNumber<std::uint64_t> index = scan_unsigned(*index_token, NumberType::UInt64);
+      if (!index.ok()) return number_error(*index_token, index);
+      polygons.corners.push_back(static_cast<std::size_t>(index.value));
     }
     tokens.skip_line();  // the face colour
     polygons.face_offsets.push_back(polygons.corners.size());

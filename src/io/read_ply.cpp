@@ -9,17 +9,16 @@
 
 #include <algorithm>
 #include <bit>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <vector>
 
 #include "io/read_mesh_internal.hpp"
+#include "strata/io/scan_number.hpp"
 
 namespace strata::io::detail {
 namespace {
@@ -57,6 +56,29 @@ std::size_t size_of(PlyType type) {
 }
 
 bool is_integer(PlyType type) { return type != PlyType::Float32 && type != PlyType::Float64; }
+
+/// What an ASCII value of the type is scanned as: integers with their declared range, `float` and
+/// `double` alike as double (SPEC §2: formats other than STL are read as double).
+NumberType number_type(PlyType type) {
+  switch (type) {
+    case PlyType::Int8:
+      return NumberType::Int8;
+    case PlyType::UInt8:
+      return NumberType::UInt8;
+    case PlyType::Int16:
+      return NumberType::Int16;
+    case PlyType::UInt16:
+      return NumberType::UInt16;
+    case PlyType::Int32:
+      return NumberType::Int32;
+    case PlyType::UInt32:
+      return NumberType::UInt32;
+    case PlyType::Float32:
+    case PlyType::Float64:
+      break;
+  }
+  return NumberType::Float64;
+}
 
 struct PlyProperty {
   std::string name;
@@ -130,12 +152,12 @@ Result<PlyHeader> parse_header(std::string_view bytes, std::string_view name,
       PlyElement element;
       element.name = std::string(next_token(rest));
       const std::string_view count = next_token(rest);
-      const auto [ptr, ec] =
-          std::from_chars(count.data(), count.data() + count.size(), element.count);
-      if (element.name.empty() || ec != std::errc() || ptr != count.data() + count.size() ||
-          count.empty()) {
+      if (element.name.empty() || count.empty()) {
         return error_at(where, "PLY element line needs a name and a count");
       }
+      const ScannedNumber<std::uint64_t> scanned = scan_unsigned(count, NumberType::UInt64);
+      if (!scanned.ok()) return bad_number(where, count, scanned);
+      element.count = scanned.value;
       header.elements.push_back(std::move(element));
     } else if (word == "property") {
       if (header.elements.empty()) return error_at(where, "PLY property before any element");
@@ -178,28 +200,46 @@ class AsciiBody {
   bool read(PlyType type, double& value) {
     const std::string_view token = next();
     if (token.empty()) return false;
-    const char* begin = token.data();
-    const char* end = begin + token.size();
-    if (*begin == '+') ++begin;
-    if (is_integer(type)) {
-      long long integer = 0;
-      const auto [ptr, ec] = std::from_chars(begin, end, integer);
-      if (ec != std::errc() || ptr != end) return fail(token);
-      value = static_cast<double>(integer);
+    const NumberType number = number_type(type);
+    NumberFault fault = NumberFault::None;
+    if (!is_integer(type)) {
+      const ScannedNumber<double> scanned = scan_real(token, number);
+      fault = scanned.fault;
+      value = scanned.value;
+    } else if (type == PlyType::Int8 || type == PlyType::Int16 || type == PlyType::Int32) {
+      const ScannedNumber<std::int64_t> scanned = scan_signed(token, number);
+      fault = scanned.fault;
+      value = static_cast<double>(scanned.value);  // at most 32 bits: exact
     } else {
-      const auto [ptr, ec] = std::from_chars(begin, end, value, std::chars_format::general);
-      if (ptr != end || (ec != std::errc() && ec != std::errc::result_out_of_range)) {
-        return fail(token);
-      }
+      const ScannedNumber<std::uint64_t> scanned = scan_unsigned(token, number);
+      fault = scanned.fault;
+      value = static_cast<double>(scanned.value);
+    }
+    if (fault != NumberFault::None) {
+      bad_token_ = BadToken{token, fault, number};
+      return false;
     }
     return true;
   }
   std::size_t remaining() const { return body_.size() - pos_; }
   std::size_t line() const { return line_; }
   std::string where() const { return fmt::format("{}:{}", name_, line_); }
-  std::string problem() const { return problem_; }
+  /// Why the last read failed, `context` naming the item: the bad-number message for a token
+  /// that is not a number of the declared type, else `context` and the problem.
+  Error failure(std::string_view context) const {
+    if (bad_token_) {
+      return bad_number(where(), bad_token_->token, bad_token_->fault, bad_token_->type);
+    }
+    return error_at(where(), fmt::format("{}: {}", context, problem_));
+  }
 
  private:
+  struct BadToken {
+    std::string_view token;
+    NumberFault fault;
+    NumberType type;
+  };
+
   std::string_view next() {
     for (;;) {
       while (pos_ < body_.size() && (is_blank(body_[pos_]) || body_[pos_] == '\r')) ++pos_;
@@ -218,16 +258,12 @@ class AsciiBody {
     if (start == pos_) problem_ = "file ends early (truncated?)";
     return body_.substr(start, pos_ - start);
   }
-  bool fail(std::string_view token) {
-    problem_ = fmt::format("'{}' is not a number of the declared type", token.substr(0, 40));
-    return false;
-  }
-
   std::string_view body_;
   std::size_t pos_ = 0;
   std::size_t line_;
   std::string_view name_;
   std::string problem_;
+  std::optional<BadToken> bad_token_;
 };
 
 /// Reads values from a binary body of either byte order.
@@ -277,7 +313,10 @@ class BinaryBody {
   std::size_t remaining() const { return body_.size() - pos_; }
   std::size_t line() const { return 0; }
   std::string where() const { return fmt::format("{}: byte {}", name_, offset_ + pos_); }
-  std::string problem() const { return problem_; }
+  /// Why the last read failed, `context` naming the item.
+  Error failure(std::string_view context) const {
+    return error_at(where(), fmt::format("{}: {}", context, problem_));
+  }
 
  private:
   template <class T>
@@ -352,8 +391,7 @@ Result<void> read_body(const PlyHeader& header, Body& body, std::string_view nam
         double value = 0.0;
         if (!property.is_list) {
           if (!body.read(property.type, value)) {
-            return error_at(body.where(), fmt::format("PLY {} {} of {}: {}", element.name, item,
-                                                      element.count, body.problem()));
+            return body.failure(fmt::format("PLY {} {} of {}", element.name, item, element.count));
           }
           for (int k = 0; k < 3; ++k) {
             if (xyz[k] == static_cast<int>(p)) point[k] = value;
@@ -362,8 +400,7 @@ Result<void> read_body(const PlyHeader& header, Body& body, std::string_view nam
         }
         double count_value = 0.0;
         if (!body.read(property.count_type, count_value)) {
-          return error_at(body.where(), fmt::format("PLY {} {} of {}: {}", element.name, item,
-                                                    element.count, body.problem()));
+          return body.failure(fmt::format("PLY {} {} of {}", element.name, item, element.count));
         }
         if (count_value < 0 || count_value > static_cast<double>(body.remaining())) {
           return error_at(body.where(),
@@ -375,8 +412,7 @@ Result<void> read_body(const PlyHeader& header, Body& body, std::string_view nam
         if (wanted) list.clear();
         for (std::size_t k = 0; k < count; ++k) {
           if (!body.read(property.type, value)) {
-            return error_at(body.where(), fmt::format("PLY {} {} of {}: {}", element.name, item,
-                                                      element.count, body.problem()));
+            return body.failure(fmt::format("PLY {} {} of {}", element.name, item, element.count));
           }
           if (wanted) {
             // A float-typed list, or a 64-bit integer rounded up to 2^63 on its way through

@@ -4,20 +4,18 @@
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <utility>
 #include <vector>
 
 #include "io/read_mesh_internal.hpp"
 #include "io/stl_format_internal.hpp"
 #include "strata/io/read_mesh.hpp"
+#include "strata/io/scan_number.hpp"
 
 namespace strata::io {
 namespace {
@@ -202,39 +200,6 @@ Keyword classify(std::string_view token) {
   return Keyword::Other;
 }
 
-enum class NumberStatus { Ok, NotANumber, NonFinite, Overflow };
-
-/// Parses a decimal number as double, then rounds it to the nearest float32 (SPEC §2: the STL
-/// format is single precision, so ASCII and binary encodings of one model read identically).
-NumberStatus parse_float32(std::string_view token, double& out) {
-  const char* begin = token.data();
-  const char* end = begin + token.size();
-  // from_chars rejects a leading '+', which exporters do write.
-  if (begin != end && *begin == '+') {
-    ++begin;
-    if (begin == end || *begin == '-' || *begin == '+') return NumberStatus::NotANumber;
-  }
-  if (begin == end) return NumberStatus::NotANumber;
-  double value = 0.0;
-  const auto [ptr, ec] = std::from_chars(begin, end, value, std::chars_format::general);
-  if (ptr != end) return NumberStatus::NotANumber;
-  if (ec == std::errc::result_out_of_range) {
-    // from_chars leaves the value untouched; strtod gives +-HUGE_VAL on overflow and the nearest
-    // representable value (possibly 0) on underflow.
-    const std::string copy(begin, end);
-    value = std::strtod(copy.c_str(), nullptr);
-    if (std::isinf(value)) return NumberStatus::Overflow;
-  } else if (ec != std::errc()) {
-    return NumberStatus::NotANumber;
-  }
-  if (!std::isfinite(value)) return NumberStatus::NonFinite;
-  // Round to nearest gives infinity from FLT_MAX + half an ulp (2^128 - 2^103) up; checked before
-  // the cast, which C++ leaves undefined out of range.
-  if (std::fabs(value) >= 0x1.ffffffp127) return NumberStatus::Overflow;
-  out = static_cast<double>(static_cast<float>(value));
-  return NumberStatus::Ok;
-}
-
 class AsciiStlParser {
  public:
   AsciiStlParser(std::string_view text, std::string_view name, const ReadLimits& limits)
@@ -310,7 +275,10 @@ void AsciiStlParser::begin_facet(std::string_view rest) {
   std::array<double, 3> n{};
   bool ok = has_keyword;
   for (int k = 0; ok && k < 3; ++k) {
-    ok = parse_float32(next_token(rest), n[k]) == NumberStatus::Ok;
+    // SPEC §2: STL is single precision, so ASCII numbers are rounded to float32 as they are read.
+    const ScannedNumber<double> scanned = scan_real(next_token(rest), NumberType::Float32);
+    ok = scanned.ok();
+    n[k] = scanned.value;
   }
   if (!ok) {
     tally_.add("stl.bad_normal", Severity::Warning, line_number_, [&] {
@@ -336,20 +304,9 @@ Result<void> AsciiStlParser::add_vertex(std::string_view rest) {
       return error_here(
           fmt::format("vertex has {} coordinate{}, expected 3", k, k == 1 ? "" : "s"));
     }
-    switch (parse_float32(token, p[k])) {
-      case NumberStatus::Ok:
-        break;
-      case NumberStatus::NotANumber:
-        return error_here(fmt::format("vertex coordinate {} is not a number", quote(token)));
-      case NumberStatus::NonFinite:
-        return error_here(fmt::format(
-            "vertex coordinate {} is not finite; NaN and infinity cannot be sliced", quote(token)));
-      case NumberStatus::Overflow:
-        return error_here(
-            fmt::format("vertex coordinate {} is outside the single-precision range of STL (|x| <= "
-                        "3.4028235e38)",
-                        quote(token)));
-    }
+    const ScannedNumber<double> scanned = scan_real(token, NumberType::Float32);
+    if (!scanned.ok()) return bad_number(line_location(name_, line_number_), token, scanned);
+    p[k] = scanned.value;
   }
   const std::string_view extra = next_token(rest);
   if (!extra.empty()) {

@@ -559,22 +559,22 @@ TEST_P(ReadStlAsciiBadVertex, IsAnErrorNamingFileAndLine) {
   EXPECT_TRUE(contains(soup.error().message, GetParam().message_part)) << soup.error().message;
 }
 
-INSTANTIATE_TEST_SUITE_P(ReadStl, ReadStlAsciiBadVertex,
-                         ::testing::Values(BadVertexCase{"vertex nan 0 0", "not finite"},
-                                           BadVertexCase{"vertex 0 NaN 0", "not finite"},
-                                           BadVertexCase{"vertex 0 0 inf", "not finite"},
-                                           BadVertexCase{"vertex -Infinity 0 0", "not finite"},
-                                           BadVertexCase{"vertex 0 0 blah", "not a number"},
-                                           BadVertexCase{"vertex 1,5 0 0", "not a number"},
-                                           BadVertexCase{"vertex 0 0 1e", "not a number"},
-                                           BadVertexCase{"vertex 0 0 \x10", "\\x10"},
-                                           BadVertexCase{"vertex 0 0", "2 coordinates"},
-                                           BadVertexCase{"vertex 0 0 0 0", "more than 3"},
-                                           BadVertexCase{"vertex 3.5e38 0 0", "single-precision"},
-                                           BadVertexCase{"vertex 0 -1e39 0", "single-precision"},
-                                           BadVertexCase{"vertex 0 0 1e400", "single-precision"},
-                                           BadVertexCase{"vertex 3.40282357e38 0 0",
-                                                         "single-precision"}));
+INSTANTIATE_TEST_SUITE_P(
+    ReadStl, ReadStlAsciiBadVertex,
+    ::testing::Values(
+        BadVertexCase{"vertex nan 0 0", "not a number (inf and nan are not accepted)"},
+        BadVertexCase{"vertex 0 NaN 0", "not a number (inf and nan are not accepted)"},
+        BadVertexCase{"vertex 0 0 inf", "not a number (inf and nan are not accepted)"},
+        BadVertexCase{"vertex -Infinity 0 0", "not a number (inf and nan are not accepted)"},
+        BadVertexCase{"vertex 0 0 blah", "not a number"},
+        BadVertexCase{"vertex 1,5 0 0", "not a number"},
+        BadVertexCase{"vertex 0 0 1e", "not a number"}, BadVertexCase{"vertex 0 0 \x10", "\\x10"},
+        BadVertexCase{"vertex 0 0", "2 coordinates"},
+        BadVertexCase{"vertex 0 0 0 0", "more than 3"},
+        BadVertexCase{"vertex 3.5e38 0 0", "too large for a float32"},
+        BadVertexCase{"vertex 0 -1e39 0", "too large for a float32"},
+        BadVertexCase{"vertex 0 0 1e400", "too large for a float32"},
+        BadVertexCase{"vertex 3.40282357e38 0 0", "too large for a float32"}));
 
 TEST(ReadStlAscii, LargestFloat32ValuesAreAccepted) {
   // 3.40282356e38 lies below FLT_MAX + half an ulp, so it rounds to FLT_MAX.
