@@ -10,6 +10,7 @@
 #include "strata/mesh/primitive_models.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
+#include "support/text_meshes.hpp"
 
 namespace strata {
 namespace {
@@ -131,6 +132,22 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"no_facets", "solid x\nendsolid x\n", ""},
                       BadInput{"garbage", "this is not a mesh at all, just some text\n", ""}),
     [](const auto& info) { return info.param.name; });
+
+// Issue 18: `1e999` in an ASCII PLY was read as 0 and the wrong part written with exit code 0.
+TEST(SliceCommand, PlyCoordinateTooLargeForADoubleExitsOneAndWritesNothing) {
+  for (const auto format : {test::TextMeshFormat::PlyFloat, test::TextMeshFormat::PlyDouble}) {
+    for (const std::string token : {"1e999", "-1e999"}) {
+      TempDir tmp("cli");
+      const test::TextMesh mesh = test::triangle_with_x(format, token);
+      const fs::path model = test::write_text_file(tmp / mesh.file_name, mesh.text);
+      const auto run = run_cli({"slice", model.string(), "-o", (tmp / "out").string()});
+      EXPECT_EQ(run.exit_code, 1) << run.err;
+      EXPECT_EQ(run.err, "strata: " + model.string() + ":11: bad number '" + token +
+                             "': too large for a double (|x| <= 1.7976931348623157e308)\n");
+      EXPECT_EQ(files_in(tmp.path()), 1u) << "only the model itself";
+    }
+  }
+}
 
 TEST(SliceCommand, MissingFileIsBadInput) {
   TempDir tmp("cli");

@@ -341,6 +341,43 @@ TEST(CellsReader, AsciiBadHeaderValueNamesTheLine) {
   EXPECT_EQ(e.location, path.string() + ":3");
 }
 
+// The numbers of an ASCII cells file follow the grammar of every text format (README "Numbers in
+// text formats") and are refused with the same message.
+TEST(CellsReader, AsciiHeaderNumberTooLargeIsABadNumberNamingTheLine) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 3, "origin -1.5 1e999 0.125");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":3");
+  EXPECT_EQ(e.message,
+            "bad number '1e999': too large for a double (|x| <= 1.7976931348623157e308)");
+}
+
+TEST(CellsReader, AsciiGridSizeWithAFractionIsABadNumber) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 2, "grid 5 3.0 2");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":2");
+  EXPECT_EQ(e.message,
+            "bad number '3.0': not an integer (no decimal point or exponent where an integer is "
+            "expected)");
+}
+
+TEST(CellsReader, AsciiLayerHeightNanIsABadNumber) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 10, "layer 1 z=nan");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":10");
+  EXPECT_EQ(e.message, "bad number 'nan': not a number (inf and nan are not accepted)");
+}
+
+TEST(CellsReader, AsciiSignedNumbersAreRead) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 10, "layer +1 z=+1.625e0");
+  auto read = read_cells(path);
+  ASSERT_TRUE(read) << read.error().to_string();
+  EXPECT_EQ(read->cells, all_small_cells());
+}
+
 TEST(CellsReader, AsciiUnknownHeaderKeyNamesTheLine) {
   ScratchDir dir;
   const auto path = ascii_with_line(dir, 5, "thickness 0.75");

@@ -4,13 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <string_view>
 
 #include "strata/export/cells_reader.hpp"
 #include "strata/io/read_mesh.hpp"
 #include "support/temp_dir.hpp"
+#include "support/text_meshes.hpp"
 
 namespace strata::io {
 namespace {
@@ -27,13 +27,6 @@ std::string ply_triangle(std::string_view list_type, std::string_view third_inde
          "property float z\nelement face 1\nproperty list uchar " +
          std::string(list_type) + " vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 " +
          std::string(third_index) + "\n";
-}
-
-std::filesystem::path write_text(const test::TempDir& dir, std::string_view name,
-                                 std::string_view text) {
-  const auto path = dir / name;
-  std::ofstream(path, std::ios::binary) << text;
-  return path;
 }
 
 /// The header of an ASCII cells file with the given grid line, then one layer
@@ -100,7 +93,8 @@ TEST(ReadPlyHostile, WholeFloatIndicesAreRead) {
 // 100000 x 100000 cells asked for 10 GB before the first row.
 TEST(CellsReaderHostile, AsciiGridLargerThanTheFileIsAnErrorBeforeAllocating) {
   test::TempDir dir;
-  const auto path = write_text(dir, "big.cells.txt", cells_header("grid 100000 100000 1"));
+  const auto path =
+      test::write_text_file(dir / "big.cells.txt", cells_header("grid 100000 100000 1"));
   const auto read = read_cells(path);
   ASSERT_FALSE(read);
   EXPECT_EQ(read.error().code, ErrorCode::BadInput);
@@ -112,7 +106,8 @@ TEST(CellsReaderHostile, AsciiGridLargerThanTheFileIsAnErrorBeforeAllocating) {
 // fuzz_cells: 4294967295 x 4294967295 cells a layer threw std::length_error.
 TEST(CellsReaderHostile, AsciiLargestGridIsAnErrorNotAnException) {
   test::TempDir dir;
-  const auto path = write_text(dir, "max.cells.txt", cells_header("grid 4294967295 4294967295 1"));
+  const auto path =
+      test::write_text_file(dir / "max.cells.txt", cells_header("grid 4294967295 4294967295 1"));
   const auto summary = summarize_cells(path);
   ASSERT_FALSE(summary);
   EXPECT_EQ(summary.error().location, path.string() + ": header");
@@ -122,7 +117,8 @@ TEST(CellsReaderHostile, AsciiLargestGridIsAnErrorNotAnException) {
 // the first layer.
 TEST(CellsReaderHostile, AsciiLayerCountLargerThanTheFileIsAnErrorBeforeTheFirstLayer) {
   test::TempDir dir;
-  const auto path = write_text(dir, "deep.cells.txt", cells_header("grid 1 1 2000000000"));
+  const auto path =
+      test::write_text_file(dir / "deep.cells.txt", cells_header("grid 1 1 2000000000"));
   int layers_seen = 0;
   const auto header = read_cells_layers(
       path, [&](const CellsHeader&, std::uint32_t, std::span<const CellClass>) -> Result<void> {
