@@ -34,14 +34,16 @@ const char* verdict_name(Verdict verdict) {
 
 namespace {
 
-/// Counts occurrences and keeps the kMaxLocations with the smallest keys (ties: first added).
+/// Counts occurrences and keeps the `limit` with the smallest keys (ties: first added).
 template <class T>
 class FirstOccurrences {
  public:
+  explicit FirstOccurrences(std::size_t limit) : limit_(limit) {}
+
   void add(std::uint64_t key, const T& location) {
     ++count_;
     items_.push_back({key, location});
-    if (items_.size() >= 4 * kMaxLocations) trim();
+    if (items_.size() >= 4 * std::max<std::size_t>(limit_, 1)) trim();
   }
 
   Occurrences<T> finish() {
@@ -57,9 +59,10 @@ class FirstOccurrences {
   void trim() {
     std::stable_sort(items_.begin(), items_.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
-    if (items_.size() > kMaxLocations) items_.resize(kMaxLocations);
+    if (items_.size() > limit_) items_.resize(limit_);
   }
 
+  std::size_t limit_;
   std::size_t count_ = 0;
   std::vector<std::pair<std::uint64_t, T>> items_;
 };
@@ -158,7 +161,7 @@ std::int64_t cell_coordinate(double offset, double cell) {
 /// Pairs of distinct vertices closer than `tolerance`, found through a grid hash whose cells are
 /// twice that size, so that the ball around a vertex meets at most 2 x 2 x 2 cells.
 void find_near_vertices(const IndexedMesh& mesh, const Bbox3& bounds, double tolerance,
-                        std::size_t max_checks, MeshReport& report) {
+                        std::size_t max_checks, std::size_t limit, MeshReport& report) {
   const std::size_t nv = mesh.vertices.size();
   const double cell = 2.0 * tolerance;
   const auto offset = [&](const Vec3& p) {
@@ -184,7 +187,7 @@ void find_near_vertices(const IndexedMesh& mesh, const Bbox3& bounds, double tol
     begin = end;
   }
 
-  FirstOccurrences<PointPair> near;
+  FirstOccurrences<PointPair> near{limit};
   const double tolerance2 = tolerance * tolerance;
   std::size_t checks = 0;
   for (std::size_t i = 0; i < nv && !report.near_vertices_truncated; ++i) {
@@ -219,7 +222,7 @@ void find_near_vertices(const IndexedMesh& mesh, const Bbox3& bounds, double tol
 
 /// Vertices whose non-degenerate facets split into several fans (edge-connected around it).
 void find_non_manifold_vertices(const IndexedMesh& mesh, const std::vector<bool>& degenerate,
-                                MeshReport& report) {
+                                std::size_t limit, MeshReport& report) {
   const std::size_t nv = mesh.vertices.size();
   std::vector<std::size_t> start(nv + 1, 0);
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
@@ -234,7 +237,7 @@ void find_non_manifold_vertices(const IndexedMesh& mesh, const std::vector<bool>
     for (VertexIndex v : mesh.triangles[f]) incident[fill[v]++] = static_cast<FacetIndex>(f);
   }
 
-  FirstOccurrences<Vec3> found;
+  FirstOccurrences<Vec3> found{limit};
   std::vector<std::pair<VertexIndex, std::uint32_t>> neighbours;  // (other vertex, local facet)
   for (std::size_t v = 0; v < nv; ++v) {
     const std::size_t n = start[v + 1] - start[v];
@@ -334,6 +337,7 @@ void judge(MeshReport& r) {
 
 MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
                          const DiagnoseOptions& options) {
+  const std::size_t limit = options.max_locations;
   const std::size_t nf = mesh.triangles.size();
   const std::size_t nv = mesh.vertices.size();
   for (const auto& t : mesh.triangles) {
@@ -350,7 +354,7 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
   // ---- facets: degenerate, area, duplicates
   std::vector<bool> degenerate(nf, false);
   {
-    FirstOccurrences<FacetIndex> found;
+    FirstOccurrences<FacetIndex> found{limit};
     double area = 0.0;
     for (std::size_t f = 0; f < nf; ++f) {
       const auto& t = mesh.triangles[f];
@@ -378,7 +382,7 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
       keyed.emplace_back(key, static_cast<FacetIndex>(f));
     }
     std::sort(keyed.begin(), keyed.end());
-    FirstOccurrences<FacetIndex> found;
+    FirstOccurrences<FacetIndex> found{limit};
     for (std::size_t s = 1; s < keyed.size(); ++s) {
       if (keyed[s].first == keyed[s - 1].first) found.add(keyed[s].second, keyed[s].second);
     }
@@ -431,7 +435,7 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
     return use.forward ? EdgeLocation{v[use.lo], v[use.hi]} : EdgeLocation{v[use.hi], v[use.lo]};
   };
   {
-    FirstOccurrences<EdgeLocation> unbalanced;
+    FirstOccurrences<EdgeLocation> unbalanced{limit};
     edge_groups(collect_edge_uses(mesh, std::vector<bool>(nf, false)),
                 [&](const EdgeUse& first, std::size_t n, std::size_t forward) {
                   if (2 * forward != n) unbalanced.add(first.facet, as_run(first));
@@ -439,7 +443,7 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
     report.unbalanced_edges = unbalanced.finish();
   }
   {
-    FirstOccurrences<EdgeLocation> boundary, non_manifold, inconsistent;
+    FirstOccurrences<EdgeLocation> boundary{limit}, non_manifold{limit}, inconsistent{limit};
     std::vector<std::pair<VertexIndex, VertexIndex>> boundary_pairs;
     edge_groups(uses, [&](const EdgeUse& first, std::size_t n, std::size_t forward) {
       // `first` is the use by the lowest facet.
@@ -502,7 +506,7 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
     // boxes decide, and the comparisons are capped for meshes made of very many shells.
     constexpr std::size_t kMaxContainmentTests = 50'000'000;
     std::size_t tests = 0;
-    FirstOccurrences<std::size_t> inverted;
+    FirstOccurrences<std::size_t> inverted{limit};
     for (std::size_t s = 0; s < shells.size(); ++s) {
       ShellReport& shell = shells[s];
       if (!shell.is_balanced || !(shell.signed_volume_mm3 < 0.0)) continue;
@@ -523,7 +527,7 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
   report.shells = std::move(shells);
 
   // ---- vertices
-  find_non_manifold_vertices(mesh, degenerate, report);
+  find_non_manifold_vertices(mesh, degenerate, limit, report);
   if (!report.bounds.empty() && nv >= 2) {
     const Vec3 lo = report.bounds.min, hi = report.bounds.max;
     const double diagonal =
@@ -532,14 +536,15 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
     const double tolerance = options.near_vertex_mm.value_or(1e-6 * diagonal);
     report.near_vertex_tolerance_mm = tolerance;
     if (tolerance > 0.0 && std::isfinite(tolerance)) {
-      find_near_vertices(mesh, report.bounds, tolerance, options.max_near_vertex_checks, report);
+      find_near_vertices(mesh, report.bounds, tolerance, options.max_near_vertex_checks, limit,
+                         report);
     }
   }
 
   // ---- stored normals
   if (!soup.stored_normals.empty() && soup.stored_normals.size() == nf) {
     report.normals_checked = true;
-    FirstOccurrences<FacetIndex> flipped, zero, non_finite;
+    FirstOccurrences<FacetIndex> flipped{limit}, zero{limit}, non_finite{limit};
     for (std::size_t f = 0; f < nf; ++f) {
       const Vec3& n = soup.stored_normals[f];
       const auto id = static_cast<FacetIndex>(f);
@@ -567,7 +572,7 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
         detail::find_self_intersections(mesh, degenerate, options.max_self_intersection_pairs,
                                         options.max_self_intersection_candidates);
     report.self_intersections.count = found.pairs.size();
-    const std::size_t kept = std::min(found.pairs.size(), kMaxLocations);
+    const std::size_t kept = std::min(found.pairs.size(), limit);
     report.self_intersections.locations.assign(found.pairs.begin(), found.pairs.begin() + kept);
     report.self_intersections_truncated = found.truncated;
   }

@@ -16,6 +16,9 @@ struct DiagnoseOptions {
   std::optional<double> near_vertex_mm = std::nullopt;
   /// Work limit of the near-vertex search (distance evaluations); the report says when it is hit.
   std::size_t max_near_vertex_checks = 50'000'000;
+  /// How many locations of each kind of defect the report keeps (the first ones); `strata view`
+  /// asks for more, to draw them.
+  std::size_t max_locations = kMaxLocations;
   bool check_self_intersections = true;
   /// The self-intersection search stops after finding this many pairs ...
   std::size_t max_self_intersection_pairs = 100'000;

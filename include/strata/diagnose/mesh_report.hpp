@@ -9,7 +9,8 @@
 
 namespace strata::diagnose {
 
-/// How many locations of each kind of defect a report keeps (the first ones, see Occurrences).
+/// How many locations of each kind of defect a report keeps by default (the first ones, see
+/// Occurrences and DiagnoseOptions::max_locations).
 inline constexpr std::size_t kMaxLocations = 20;
 
 /// An edge given by its end points, in millimetres. For an edge that belongs to one facet (open
@@ -33,8 +34,8 @@ struct PointPair {
 };
 
 /// How often a defect occurs, and where its first occurrences are.
-/// `locations` holds the first min(count, kMaxLocations) occurrences in increasing order of the
-/// lowest facet (or, for vertex defects, vertex) index involved.
+/// `locations` holds the first min(count, DiagnoseOptions::max_locations) occurrences in increasing
+/// order of the lowest facet (or, for vertex defects, vertex) index involved.
 template <class Location>
 struct Occurrences {
   std::size_t count = 0;
