@@ -1,0 +1,137 @@
+// What the view page holds of each layer: packed as the cells file, blocks for 3D, the budget.
+#include <gtest/gtest.h>
+#include <zlib.h>
+
+#include "strata/view/view_stack.hpp"
+
+namespace strata::view {
+namespace {
+
+std::string inflate(const std::string& packed, std::size_t size) {
+  std::string out(size, '\0');
+  uLongf n = static_cast<uLongf>(size);
+  EXPECT_EQ(
+      uncompress(reinterpret_cast<Bytef*>(out.data()), &n,
+                 reinterpret_cast<const Bytef*>(packed.data()), static_cast<uLong>(packed.size())),
+      Z_OK);
+  EXPECT_EQ(n, size);
+  return out;
+}
+
+SliceRunInfo run_on(std::uint32_t nx, std::uint32_t ny, std::uint32_t nz) {
+  SliceRunInfo run;
+  run.grid = GridSpec{0, 0, 0, 0.5, 0.25, 0.1, nx, ny, nz};
+  run.options.shell_mm = 0.3;
+  return run;
+}
+
+/// Cell (i, j) of layer k: boundary on the rim of the layer, interior inside, empty at i == 0.
+CellClass pattern(std::uint32_t i, std::uint32_t j, std::uint32_t nx, std::uint32_t ny) {
+  if (i == 0) return CellClass::Empty;
+  if (i == 1 || j == 0 || i == nx - 1 || j == ny - 1) return CellClass::Boundary;
+  return CellClass::Interior;
+}
+
+void feed(ViewStackCollector& sink, const SliceRunInfo& run, std::size_t hatches_a_layer = 0) {
+  ASSERT_TRUE(sink.begin(run).has_value());
+  const GridSpec& g = run.grid;
+  for (std::uint32_t k = 0; k < g.nz; ++k) {
+    std::vector<CellClass> cells(g.cells_per_layer());
+    for (std::uint32_t j = 0; j < g.ny; ++j) {
+      for (std::uint32_t i = 0; i < g.nx; ++i) cells[j * g.nx + i] = pattern(i, j, g.nx, g.ny);
+    }
+    LayerContours contours;
+    Contour square;
+    square.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    square.is_closed = true;
+    square.kind = LoopKind::Outer;
+    contours.loops.push_back(square);
+    std::vector<HatchSegment> hatches;
+    for (std::size_t h = 0; h < hatches_a_layer; ++h) {
+      hatches.push_back(HatchSegment{static_cast<std::uint32_t>(h % g.ny), 0.5, 2.0});
+    }
+    ASSERT_TRUE(sink.add_layer(LayerResult{k, g.zk(k), cells, contours, hatches}).has_value());
+  }
+  ASSERT_TRUE(sink.finish().has_value());
+}
+
+TEST(ViewStackCollector, PacksLayersAsTheCellsFileWithTheFirstCellInTheHighBits) {
+  ViewStackCollector sink;
+  const SliceRunInfo run = run_on(5, 3, 2);
+  feed(sink, run);
+  const ViewStack stack = sink.take();
+  ASSERT_EQ(stack.stored, (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_EQ(stack.stride, 1u);
+  EXPECT_DOUBLE_EQ(stack.shell_mm, 0.3);
+  const std::string layer = inflate(stack.cells_zlib[1], 4);  // ceil(15 / 4) bytes
+  // Row 0: 00 11 11 11 11 | row 1: 00 11 01 01 11 | row 2: 00 11 11 11 11, then 2 padding bits.
+  EXPECT_EQ(static_cast<unsigned char>(layer[0]), 0b00111111);
+  EXPECT_EQ(static_cast<unsigned char>(layer[1]), 0b11001101);
+  EXPECT_EQ(static_cast<unsigned char>(layer[2]), 0b01110011);
+  EXPECT_EQ(static_cast<unsigned char>(layer[3]), 0b11111100);
+  ASSERT_EQ(stack.contours[0].size(), 1u);
+  EXPECT_EQ(stack.contours[0][0].kind, LoopKind::Outer);
+  EXPECT_EQ(stack.contours[0][0].xy, (std::vector<float>{0, 0, 1, 0, 1, 1, 0, 1}));
+}
+
+TEST(ViewStackCollector, VolumeBlocksHoldTheHighestClassOfTheirCells) {
+  ViewStackCollector sink(ViewStackOptions{.max_blocks = 2});
+  feed(sink, run_on(5, 3, 3));
+  const ViewVolume v = sink.take().volume;
+  EXPECT_EQ(v.bx, 3u);  // ceil(5 / 2)
+  EXPECT_EQ(v.by, 2u);
+  EXPECT_EQ(v.bz, 2u);
+  EXPECT_EQ(v.nx, 2u);
+  EXPECT_EQ(v.ny, 2u);
+  EXPECT_EQ(v.nz, 2u);
+  ASSERT_EQ(v.blocks.size(), 8u);
+  for (std::uint8_t b : v.blocks) EXPECT_EQ(b, 3) << "every block touches the boundary rim";
+}
+
+TEST(ViewStackCollector, KeepsTheScanlinesAsSegmentsAtTheRowCentres) {
+  ViewStackCollector sink;
+  feed(sink, run_on(5, 3, 1), 2);
+  const ViewStack stack = sink.take();
+  ASSERT_TRUE(stack.has_hatches);
+  EXPECT_EQ(stack.hatches[0],
+            (std::vector<float>{0.5f, 0.125f, 2.0f, 0.125f, 0.5f, 0.375f, 2.0f, 0.375f}));
+}
+
+TEST(FitToBudget, LeavesAStackWithinBudgetAlone) {
+  ViewStackCollector sink;
+  feed(sink, run_on(40, 30, 10), 30);
+  ViewStack stack = sink.take();
+  fit_to_budget(stack, std::uint64_t{1} << 30);
+  EXPECT_EQ(stack.stored.size(), 10u);
+  EXPECT_TRUE(stack.has_hatches);
+  EXPECT_TRUE(stack.notes.empty());
+}
+
+TEST(FitToBudget, DropsTheScanlinesFirst) {
+  ViewStackCollector sink;
+  feed(sink, run_on(40, 30, 10), 300);
+  ViewStack stack = sink.take();
+  // 300 segments of 16 bytes a layer take about 64 kB of base64 in all; the cells far less.
+  fit_to_budget(stack, 20'000);
+  EXPECT_FALSE(stack.has_hatches);
+  EXPECT_EQ(stack.stored.size(), 10u);
+  ASSERT_EQ(stack.notes.size(), 1u);
+  EXPECT_NE(stack.notes[0].find("scanline segments left out"), std::string::npos);
+}
+
+TEST(FitToBudget, ThenKeepsEveryNthLayerAndSaysSo) {
+  ViewStackCollector sink;
+  feed(sink, run_on(40, 30, 10));
+  ViewStack stack = sink.take();
+  fit_to_budget(stack, 300);
+  EXPECT_GT(stack.stride, 1u);
+  for (std::uint32_t k : stack.stored) EXPECT_EQ(k % stack.stride, 0u);
+  EXPECT_EQ(stack.cells_zlib.size(), stack.stored.size());
+  EXPECT_EQ(stack.contours.size(), stack.stored.size());
+  ASSERT_FALSE(stack.notes.empty());
+  EXPECT_NE(stack.notes.back().find("subsampled stack"), std::string::npos);
+  EXPECT_NE(stack.notes.back().find("of 10"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace strata::view
