@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <vector>
 
 #include "cli/command.hpp"
 #include "cli/exit_code.hpp"
@@ -16,9 +18,49 @@ struct InfoOptions {
   std::string file;
   bool per_layer = false;
   bool json = false;
+  std::vector<std::uint32_t> cell;  ///< --cell I,J,K
 };
 
+const char* class_words(CellClass c) {
+  switch (c) {
+    case CellClass::Empty:
+      return "empty (00)";
+    case CellClass::Interior:
+      return "interior (01)";
+    case CellClass::Boundary:
+      return "boundary (11)";
+  }
+  return "reserved (10)";
+}
+
+/// `strata info FILE --cell I,J,K`: the class of one cell, reading layer by layer.
+int run_cell(const InfoOptions& o) {
+  const std::uint32_t i = o.cell[0], j = o.cell[1], k = o.cell[2];
+  std::optional<CellClass> found;
+  auto header = io::read_cells_layers(
+      o.file,
+      [&](const io::CellsHeader& h, std::uint32_t layer,
+          std::span<const CellClass> cells) -> Result<void> {
+        const GridSpec& g = h.grid;
+        if (i >= g.nx || j >= g.ny || k >= g.nz) {
+          return Error{ErrorCode::Usage,
+                       fmt::format("--cell {},{},{} is outside the grid of {} x {} x {} cells", i,
+                                   j, k, g.nx, g.ny, g.nz),
+                       {}};
+        }
+        if (layer == k) found = cells[std::size_t{j} * g.nx + i];
+        return {};
+      });
+  if (!header) return report_error(header.error());
+  if (!found) return report_error(Error{ErrorCode::Internal, "the layer was not read", o.file});
+  const GridSpec& g = header->grid;
+  std::printf("cell %u,%u,%u %s at x=%.9g y=%.9g z=%.9g mm\n", i, j, k, class_words(*found),
+              g.xc(i), g.yc(j), g.zk(k));
+  return kExitOk;
+}
+
 int run_info(const InfoOptions& o) {
+  if (!o.cell.empty()) return run_cell(o);
   auto summary = io::summarize_cells(o.file);
   if (!summary) return report_error(summary.error());
   const auto& h = summary->header;
@@ -79,6 +121,9 @@ void register_info_command(CLI::App& app, CommandRunner& runner) {
   cmd->add_option("FILE", options->file, "A .cells or .cells.txt file")->required();
   cmd->add_flag("--layers", options->per_layer, "Also list the counts of every layer");
   cmd->add_flag("--json", options->json, "Print JSON instead of text");
+  cmd->add_option("--cell", options->cell, "Print the class of cell I,J,K (0-based indices)")
+      ->delimiter(',')
+      ->expected(3);
   cmd->callback([options, &runner] { runner = [options] { return run_info(*options); }; });
 }
 

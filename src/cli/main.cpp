@@ -13,10 +13,11 @@ constexpr const char* kDescription =
     "strata slices triangle meshes (STL, OBJ, OFF, PLY, also .gz) into layers of cells for\n"
     "binder-jetting and powder-bed printing: every cell of a regular grid is empty (00),\n"
     "interior (01) or boundary shell (11), decided by an exact inside rule.\n\n"
-    "First run:  strata slice model.stl        (writes model-strata/ with cells, PNGs, report)\n"
+    "First run:  strata slice model.stl        (writes model-strata/: cells, PNGs, report, page)\n"
     "Read back:  strata info model-strata/model.cells\n"
     "Check mesh: strata check model.stl\n"
-    "Prove it:   strata validate model.stl   (fast path vs exact path, cell for cell)\n\n"
+    "Prove it:   strata validate model.stl   (fast path vs exact path, cell for cell)\n"
+    "See it:     strata view model.stl       (one HTML page: 3D model, layers, sections)\n\n"
     "Exit codes: 0 success, 1 bad input, 2 bad usage, 3 internal error,\n"
     "            4 validate found cells on which the fast and exact paths differ.";
 
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
   strata::cli::register_info_command(app, runner);
   strata::cli::register_check_command(app, runner);
   strata::cli::register_validate_command(app, runner);
+  strata::cli::register_view_command(app, runner);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,7 +1,11 @@
+#include "cli/slice_command.hpp"
+
 #include <fmt/format.h>
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -26,6 +30,8 @@
 #include "strata/repair/repair_log_json.hpp"
 #include "strata/repair/repair_log_text.hpp"
 #include "strata/repair/repair_mesh.hpp"
+#include "strata/view/view_page.hpp"
+#include "strata/view/view_stack.hpp"
 
 namespace strata::cli {
 
@@ -33,19 +39,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::set<std::string> kFormats = {"cells", "cells-ascii", "png", "svg",
-                                        "cli",   "cli-binary",  "json"};
-
-struct SliceCommandOptions {
-  std::string model;
-  std::string output_dir;
-  std::string formats = "cells,png,json";
-  std::string kernel = "fast";
-  SliceCliOptions slice;
-  bool quiet = false;
-  bool repair = false;      ///< --repair: slice the repaired mesh (in memory)
-  bool fill_holes = false;  ///< --fill-holes, with --repair
-};
+const std::set<std::string> kFormats = {"cells", "cells-ascii", "png",  "svg",
+                                        "cli",   "cli-binary",  "json", "html"};
 
 Result<std::set<std::string>> parse_formats(const std::string& list) {
   std::set<std::string> formats;
@@ -56,7 +51,7 @@ Result<std::set<std::string>> parse_formats(const std::string& list) {
     if (!kFormats.count(item)) {
       return Error{ErrorCode::Usage,
                    fmt::format("--format: unknown format '{}' (known: cells, cells-ascii, png, "
-                               "svg, cli, cli-binary, json)",
+                               "svg, cli, cli-binary, json, html)",
                                item),
                    {}};
     }
@@ -76,6 +71,23 @@ std::string with_thousands(std::uint64_t n) {
   }
   return out;
 }
+
+std::string file_url(const fs::path& path) {
+  std::error_code ec;
+  fs::path absolute = fs::absolute(path, ec);
+  if (ec) absolute = path;
+  std::string url = "file://";
+  for (const unsigned char c : absolute.lexically_normal().string()) {
+    if (std::isalnum(c) || std::strchr("/-._~", c) != nullptr) {
+      url.push_back(static_cast<char>(c));
+    } else {
+      url += fmt::format("%{:02X}", c);
+    }
+  }
+  return url;
+}
+
+}  // namespace
 
 int run_slice(const SliceCommandOptions& o) {
   using Clock = std::chrono::steady_clock;
@@ -144,12 +156,21 @@ int run_slice(const SliceCommandOptions& o) {
     owned.push_back(io::make_cli_writer(dir / (stem + ".bin.cli"), io::CliEncoding::Binary));
     written.push_back(stem + ".bin.cli");
   }
+  view::ViewStackCollector* view_collector = nullptr;
+  if (formats->count("html")) {
+    auto collector = std::make_unique<view::ViewStackCollector>(
+        view::ViewStackOptions{.hatches = o.page.hatches});
+    view_collector = collector.get();
+    owned.push_back(std::move(collector));
+  }
   std::vector<LayerSink*> sinks;
   for (auto& s : owned) sinks.push_back(s.get());
 
   diagnose::DiagnoseOptions diagnose_options;
-  diagnose_options.check_self_intersections = false;
+  diagnose_options.check_self_intersections = view_collector != nullptr && o.page.full_check;
   diagnose_options.near_vertex_mm = 0.0;
+  // The page draws the defects, so it asks for more of their locations than a report lists.
+  if (view_collector != nullptr) diagnose_options.max_locations = o.page.max_defects;
   const diagnose::MeshReport mesh_report =
       diagnose::diagnose_mesh(model->mesh, model->soup, diagnose_options);
 
@@ -171,18 +192,48 @@ int run_slice(const SliceCommandOptions& o) {
     return report_error(summary.error());
   }
   const double seconds_total = std::chrono::duration<double>(Clock::now() - started).count();
+  auto report = slice_report_json(*model, mesh_report, *options, o.kernel, *summary, seconds_total);
+  if (repair_log) {
+    report["repair"] = nlohmann::json::parse(repair::repair_log_json(*repair_log));
+    report["repair"]["seconds"] = seconds_repair;
+  }
   if (formats->count("json")) {
-    auto report =
-        slice_report_json(*model, mesh_report, *options, o.kernel, *summary, seconds_total);
-    if (repair_log) {
-      report["repair"] = nlohmann::json::parse(repair::repair_log_json(*repair_log));
-      report["repair"]["seconds"] = seconds_repair;
-    }
     fs::create_directories(dir, ec);
     if (auto ok = io::write_text_file(dir / (stem + ".json"), report.dump(2) + "\n"); !ok) {
       return report_error(ok.error());
     }
     written.push_back(stem + ".json");
+  }
+  std::optional<fs::path> page_path;
+  if (view_collector != nullptr) {
+    page_path = o.page.path.empty() ? dir / (stem + ".html") : fs::path(o.page.path);
+    view::ViewPage page;
+    page.title = stem;
+    page.source_kind = "model";
+    page.source_path = model->path.string();
+    page.report_json = report.dump();
+    page.mesh = view::make_display_mesh(model->mesh, o.page.max_facets);
+    if (page.mesh->simplified) {
+      page.notes.push_back(fmt::format(
+          "display mesh simplified from {} to {} facets for the browser; slicing used every facet",
+          with_thousands(page.mesh->facets_in_model), with_thousands(page.mesh->facets())));
+    }
+    if (!mesh_report.self_intersections_checked) {
+      page.notes.push_back(
+          fmt::format("self-intersections not checked: `strata check {}` or "
+                      "`strata view {}` checks them",
+                      model->path.filename().string(), model->path.filename().string()));
+    }
+    page.check = mesh_report;
+    page.model_mesh = &model->mesh;
+    page.stack = view_collector->take();
+    view::fit_to_budget(page.stack, static_cast<std::uint64_t>(o.page.budget_mb * 1e6));
+    if (page_path->has_parent_path()) fs::create_directories(page_path->parent_path(), ec);
+    if (auto ok = view::write_view_page(*page_path, page); !ok) {
+      remove_dir_if_we_made_it();
+      return report_error(ok.error());
+    }
+    if (o.page.path.empty()) written.push_back(stem + ".html");
   }
   for (const auto& d : summary->diagnostics) {
     std::fprintf(stderr, "strata: %s: %s\n", d.severity == Severity::Warning ? "warning" : "note",
@@ -221,14 +272,31 @@ int run_slice(const SliceCommandOptions& o) {
                      std::count_if(s.layers.begin(), s.layers.end(),
                                    [](const LayerStats& l) { return l.open_chains > 0; }),
                      s.open_chains ? " (see the report: nothing was closed by a guess)" : "");
-  out += fmt::format("output  {}/: {}\n", dir.string(), fmt::join(written, ", "));
+  if (!written.empty()) {
+    out += fmt::format("output  {}/: {}\n", dir.string(), fmt::join(written, ", "));
+  }
+  if (page_path) {
+    out += fmt::format("page    {} (open {} in a browser; it works offline)\n", page_path->string(),
+                       file_url(*page_path));
+  }
   out += fmt::format("time    read {:.3f} s, slice {:.3f} s, total {:.3f} s\n", model->seconds_read,
                      s.seconds, seconds_total);
   std::fputs(out.c_str(), stdout);
   return kExitOk;
 }
 
-}  // namespace
+void add_page_options(CLI::App& cmd, PageOptions& page) {
+  cmd.add_option("--page-budget", page.budget_mb,
+                 "MB of layers the HTML page may hold; above it the scanline segments are left "
+                 "out, then every n-th layer only")
+      ->default_val(page.budget_mb)
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--page-facets", page.max_facets,
+                 "Facets the page's 3D model may have; a larger mesh is simplified for display")
+      ->default_val(page.max_facets)
+      ->check(CLI::Range(std::size_t{1000}, std::size_t{50'000'000}));
+  cmd.add_flag("!--no-hatches", page.hatches, "Leave the scanline segments out of the page");
+}
 
 void register_slice_command(CLI::App& app, CommandRunner& runner) {
   auto options = std::make_shared<SliceCommandOptions>();
@@ -242,8 +310,9 @@ void register_slice_command(CLI::App& app, CommandRunner& runner) {
       ->default_val("fast")
       ->check(CLI::IsMember({"fast", "exact"}));
   cmd->add_option("--format", options->formats,
-                  "Comma list of outputs: cells, cells-ascii, png, svg, cli, cli-binary, json")
-      ->default_val("cells,png,json");
+                  "Comma list of outputs: cells, cells-ascii, png, svg, cli, cli-binary, json, "
+                  "html (the view page, <stem>.html)")
+      ->default_val(kDefaultFormats);
   cmd->add_flag("-q,--quiet", options->quiet, "Print nothing on success");
   auto* repair = cmd->add_flag("--repair", options->repair,
                                "Repair the mesh in memory before slicing (as `strata check "
@@ -251,6 +320,7 @@ void register_slice_command(CLI::App& app, CommandRunner& runner) {
                                "report");
   cmd->add_flag("--fill-holes", options->fill_holes, "With --repair: fill holes too")
       ->needs(repair);
+  add_page_options(*cmd, options->page);
   cmd->callback([options, &runner] { runner = [options] { return run_slice(*options); }; });
 }
 
