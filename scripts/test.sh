@@ -5,6 +5,6 @@
 # corpus tests, and the quick validation run). Any sanitizer report fails the test it occurs in.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh sanitizers
+bash scripts/setup.sh test
 bash scripts/build.sh asan
 ctest --preset asan
