@@ -54,6 +54,16 @@ export class LayerView {
     this.viewport.requestDraw();
     this.onImage();
     if (this.hoverPoint) this.hover(...this.hoverPoint);
+    this.#prefetch(index);
+  }
+
+  /** Decodes the neighbours of a shown layer ahead, so that stepping through layers waits less. */
+  #prefetch(index) {
+    const last = this.data.stored.length - 1;
+    for (const n of [index + 1, index - 1, index + 2, index - 2]) {
+      if (n < 0 || n > last || this.data.layerIfReady(n)) continue;
+      this.data.layer(n).catch(() => {}); // an error shows when that layer is shown
+    }
   }
 
   /** The image of the selected layer with empty cells transparent (for the 3D cutting plane). */
