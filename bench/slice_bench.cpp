@@ -9,8 +9,8 @@
 
 #include "strata/io/read_mesh.hpp"
 #include "strata/mesh/weld_vertices.hpp"
-#include "strata/pipeline/slice_model.hpp"
 #include "strata/slice/slice_float.hpp"
+#include "strata/slicer/slice_model.hpp"
 #include "strata/voxel/boundary_shell.hpp"
 
 namespace {

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "fuzz_support.hpp"
-#include "strata/export/cells_reader.hpp"
+#include "strata/io/read_cells.hpp"
 
 namespace {
 

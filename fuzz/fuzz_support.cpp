@@ -9,8 +9,8 @@
 
 #include "strata/mesh/weld_vertices.hpp"
 #include "strata/pipeline/layer_sink.hpp"
-#include "strata/pipeline/slice_model.hpp"
 #include "strata/slice/grid_spec.hpp"
+#include "strata/slicer/slice_model.hpp"
 
 namespace strata::fuzz {
 namespace {

@@ -31,7 +31,7 @@
 
 #include "degenerate_models.hpp"
 #include "strata/core/quiet_cgal.hpp"
-#include "strata/export/output_file.hpp"
+#include "strata/io/output_file.hpp"
 #include "strata/io/read_mesh.hpp"
 #include "strata/io/write_stl.hpp"
 #include "strata/mesh/weld_vertices.hpp"

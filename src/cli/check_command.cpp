@@ -12,7 +12,7 @@
 #include "strata/diagnose/diagnose_mesh.hpp"
 #include "strata/diagnose/mesh_report_json.hpp"
 #include "strata/diagnose/mesh_report_text.hpp"
-#include "strata/export/output_file.hpp"
+#include "strata/io/output_file.hpp"
 #include "strata/io/write_stl.hpp"
 #include "strata/mesh/weld_vertices.hpp"
 #include "strata/repair/repair_log_json.hpp"
@@ -109,7 +109,8 @@ int run_check(const CheckOptions& o) {
   std::fputs(diagnose::mesh_report_text(report).c_str(), stdout);
   if (repaired) {
     std::fputs("\n", stdout);
-    std::fputs(repair::repair_log_text(repaired->result.log).c_str(), stdout);
+    std::fputs(repair::repair_log_text(repaired->result.log, "--fill-holes not given").c_str(),
+               stdout);
     std::fprintf(stdout, "\nrepaired %s (binary STL, %zu facets, %.3f s)\n",
                  o.repair_output.c_str(), repaired->result.soup.triangles.size(),
                  repaired->seconds);

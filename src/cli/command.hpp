@@ -3,14 +3,9 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 
-namespace strata::cli {
+#include "cli/exit_code.hpp"
 
-/// Exit codes of SPEC §4.
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitBadInput = 1;
-inline constexpr int kExitUsage = 2;
-inline constexpr int kExitInternal = 3;
-inline constexpr int kExitCellsDiffer = 4;
+namespace strata::cli {
 
 /// What a subcommand does once the command line has been parsed; returns the exit code.
 using CommandRunner = std::function<int()>;

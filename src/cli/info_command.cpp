@@ -8,7 +8,7 @@
 
 #include "cli/command.hpp"
 #include "cli/exit_code.hpp"
-#include "strata/export/cells_reader.hpp"
+#include "strata/io/read_cells.hpp"
 
 namespace strata::cli {
 

@@ -14,6 +14,7 @@
 
 #include "cli/command.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/flag_names.hpp"
 #include "cli/load_model.hpp"
 #include "cli/progress.hpp"
 #include "cli/slice_cli_options.hpp"
@@ -22,14 +23,14 @@
 #include "strata/exact/slice_exact.hpp"
 #include "strata/export/cells_writer.hpp"
 #include "strata/export/cli_writer.hpp"
-#include "strata/export/output_file.hpp"
 #include "strata/export/png_stack_writer.hpp"
 #include "strata/export/svg_writer.hpp"
+#include "strata/io/output_file.hpp"
 #include "strata/mesh/weld_vertices.hpp"
-#include "strata/pipeline/slice_model.hpp"
 #include "strata/repair/repair_log_json.hpp"
 #include "strata/repair/repair_log_text.hpp"
 #include "strata/repair/repair_mesh.hpp"
+#include "strata/slicer/slice_model.hpp"
 #include "strata/view/view_page.hpp"
 #include "strata/view/view_stack.hpp"
 
@@ -175,7 +176,13 @@ int run_slice(const SliceCommandOptions& o) {
       diagnose::diagnose_mesh(model->mesh, model->soup, diagnose_options);
 
   Result<SliceSummary> summary = Error{ErrorCode::Internal, "not run", {}};
-  {
+  if (o.kernel == "exact" && options->fill_rule == FillRule::Winding) {
+    // The exact path refuses the winding rule too; the command line says it with its flags.
+    summary = Error{ErrorCode::Usage,
+                    "--fill-rule winding is evaluated by the fast path only (solid angles are not "
+                    "exact): use --kernel fast, or nonzero or evenodd",
+                    {}};
+  } else {
     ProgressLine progress("slicing " + model->path.filename().string());
     const ProgressCallback on_progress = [&](std::uint32_t done, std::uint32_t total) {
       progress.update(done, total);
@@ -191,6 +198,7 @@ int run_slice(const SliceCommandOptions& o) {
     remove_dir_if_we_made_it();
     return report_error(summary.error());
   }
+  name_flags(summary->diagnostics);
   const double seconds_total = std::chrono::duration<double>(Clock::now() - started).count();
   auto report = slice_report_json(*model, mesh_report, *options, o.kernel, *summary, seconds_total);
   if (repair_log) {

@@ -4,7 +4,7 @@
 
 #include "cli/load_model.hpp"
 #include "strata/diagnose/mesh_report.hpp"
-#include "strata/pipeline/slice_model.hpp"
+#include "strata/pipeline/run_slice.hpp"
 
 namespace strata::cli {
 

@@ -6,10 +6,11 @@
 
 #include "cli/command.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/flag_names.hpp"
 #include "cli/load_model.hpp"
 #include "cli/progress.hpp"
 #include "cli/slice_cli_options.hpp"
-#include "strata/export/output_file.hpp"
+#include "strata/io/output_file.hpp"
 #include "strata/slice/grid_spec.hpp"
 #include "strata/validate/validate_model.hpp"
 #include "strata/validate/validation_json.hpp"
@@ -82,6 +83,7 @@ int run_validate(const ValidateCommandOptions& o) {
     report = validate::validate_model(model->mesh, *grid, *options, vopts);
   }
   if (!report) return report_error(report.error());
+  name_flags(report->diagnostics);
 
   if (!o.json_file.empty()) {
     if (auto ok = io::write_text_file(o.json_file, validate::validation_json(*report)); !ok) {

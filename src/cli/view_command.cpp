@@ -12,8 +12,8 @@
 #include "cli/load_model.hpp"
 #include "cli/slice_command.hpp"
 #include "strata/diagnose/diagnose_mesh.hpp"
-#include "strata/export/cells_reader.hpp"
-#include "strata/pipeline/slice_model.hpp"
+#include "strata/io/read_cells.hpp"
+#include "strata/slicer/slice_model.hpp"
 #include "strata/view/view_page.hpp"
 #include "strata/view/view_stack.hpp"
 

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "contour/chain_segments_internal.hpp"
-#include "contour/loop_check_internal.hpp"
+#include "contour/chain_segments.hpp"
+#include "contour/loop_check.hpp"
 #include "contour/point_in_polygon_internal.hpp"
 
 namespace strata {

@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "slice/filtered_sign_internal.hpp"
+#include "predicates/filtered_sign.hpp"
 #include "strata/mesh/vec3.hpp"
 
 namespace strata::detail {

@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "diagnose/exact_geometry_internal.hpp"
+#include "diagnose/exact_geometry.hpp"
 #include "diagnose/find_self_intersections_internal.hpp"
 #include "strata/core/error.hpp"
 

@@ -1,3 +1,5 @@
+#include "diagnose/exact_geometry.hpp"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <gmpxx.h>
 #include <mpfr.h>
@@ -10,7 +12,6 @@
 #include <cstdlib>
 #include <vector>
 
-#include "diagnose/exact_geometry_internal.hpp"
 #include "strata/core/error.hpp"
 
 namespace strata::diagnose::detail {

@@ -6,8 +6,8 @@
 #include <limits>
 #include <new>
 
-#include "contour/chain_segments_internal.hpp"
-#include "contour/loop_check_internal.hpp"
+#include "contour/chain_segments.hpp"
+#include "contour/loop_check.hpp"
 #include "exact/exact_arrangement_internal.hpp"
 #include "exact/exact_cut_internal.hpp"
 #include "exact/exact_fill_internal.hpp"
@@ -255,8 +255,8 @@ Result<SliceSummary> slice_model_exact(const IndexedMesh& mesh, const GridSpec& 
   if (options.fill_rule == FillRule::Winding) {
     return Error{
         ErrorCode::Usage,
-        "--fill-rule winding is evaluated by the fast path only (solid angles are not exact): "
-        "use --kernel fast, or nonzero or evenodd",
+        "fill rule winding is evaluated by the fast path only (solid angles are not exact): "
+        "slice with the fast path, or with fill rule nonzero or evenodd",
         {}};
   }
   if (auto ok = exact::detail::check_mesh_for_exact(mesh); !ok) return ok.error();

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 #include "strata/core/result.hpp"
@@ -40,6 +41,7 @@ class ExactKernel final : public LayerKernel {
 
   void prepare_batch(std::uint32_t k0, std::uint32_t k1) override;
   LayerGeometry compute_layer(std::uint32_t k) const override;
+  std::string_view name() const override { return "exact path"; }
 
   /// The soup repair figures and the layers counted so far by contour method.
   ExactSliceReport report() const;

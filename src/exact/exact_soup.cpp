@@ -13,7 +13,7 @@
 #include <utility>
 
 #include "exact/exact_soup_internal.hpp"
-#include "exact/orient_soup_visitor_internal.hpp"
+#include "soup/orient_soup_visitor.hpp"
 
 namespace strata::exact::detail {
 namespace {
@@ -91,10 +91,10 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
   d.report.points_merged = input.vertices.size() - points.size();
   d.report.polygons_removed = input.triangles.size() - polygons.size();
 
-  OrientSoupCounts counters;
+  soup::OrientSoupCounts counters;
   const std::size_t points_before = points.size();
   PMP::orient_polygon_soup(points, polygons,
-                           CGAL::parameters::visitor(OrientSoupVisitor{&counters}));
+                           CGAL::parameters::visitor(soup::OrientSoupVisitor{&counters}));
   d.report.points_duplicated = points.size() - points_before;
   d.report.polygons_reversed = counters.reversed;
   d.report.non_manifold_edges = counters.non_manifold_edges.size();

@@ -11,8 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "io/little_endian.hpp"
 #include "strata/core/result.hpp"
-#include "strata/export/output_file.hpp"
+#include "strata/io/output_file.hpp"
 #include "strata/pipeline/layer_sink.hpp"
 
 namespace strata::io::detail {
@@ -123,46 +124,6 @@ class LayerFilesSink : public LayerSink {
   SinkProgress progress_;
   CreatedPaths created_;
 };
-
-inline void put_u16_le(std::string& out, std::uint16_t v) {
-  out.push_back(static_cast<char>(v & 0xffu));
-  out.push_back(static_cast<char>((v >> 8) & 0xffu));
-}
-
-inline void put_u32_le(std::string& out, std::uint32_t v) {
-  for (int shift = 0; shift < 32; shift += 8)
-    out.push_back(static_cast<char>((v >> shift) & 0xffu));
-}
-
-inline void put_i32_le(std::string& out, std::int32_t v) {
-  put_u32_le(out, static_cast<std::uint32_t>(v));
-}
-
-inline void put_f32_le(std::string& out, float v) {
-  std::uint32_t bits = 0;
-  std::memcpy(&bits, &v, sizeof bits);
-  put_u32_le(out, bits);
-}
-
-inline void put_f64_le(std::string& out, double v) {
-  std::uint64_t bits = 0;
-  std::memcpy(&bits, &v, sizeof bits);
-  for (int shift = 0; shift < 64; shift += 8)
-    out.push_back(static_cast<char>((bits >> shift) & 0xffu));
-}
-
-inline std::uint32_t get_u32_le(const unsigned char* p) {
-  return std::uint32_t{p[0]} | (std::uint32_t{p[1]} << 8) | (std::uint32_t{p[2]} << 16) |
-         (std::uint32_t{p[3]} << 24);
-}
-
-inline double get_f64_le(const unsigned char* p) {
-  std::uint64_t bits = 0;
-  for (int b = 0; b < 8; ++b) bits |= std::uint64_t{p[b]} << (8 * b);
-  double v = 0.0;
-  std::memcpy(&v, &bits, sizeof v);
-  return v;
-}
 
 /// Appends a double in the shortest form that reads back to the same bits.
 inline void append_number(std::string& out, double v) {

@@ -5,8 +5,8 @@
 #include <limits>
 #include <span>
 
-#include "slice/crossing_predicates_internal.hpp"
-#include "slice/grid_search_internal.hpp"
+#include "predicates/crossing_predicates.hpp"
+#include "predicates/grid_search.hpp"
 
 namespace strata {
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-#include "strata/export/output_file.hpp"
+#include "strata/io/output_file.hpp"
 
 namespace strata::io {
 namespace {

@@ -24,9 +24,9 @@
 #include <utility>
 #include <vector>
 
-#include "diagnose/exact_geometry_internal.hpp"
-#include "exact/orient_soup_visitor_internal.hpp"
+#include "diagnose/exact_geometry.hpp"
 #include "repair/repair_internal.hpp"
+#include "soup/orient_soup_visitor.hpp"
 
 namespace strata::repair::detail {
 namespace {
@@ -425,10 +425,10 @@ std::vector<OutputFacet> orient_and_close(const CleanSoup& clean, const RepairOp
     return {};
   }
 
-  exact::detail::OrientSoupCounts counters;
+  soup::OrientSoupCounts counters;
   const std::size_t points_before = points.size();
   PMP::orient_polygon_soup(points, polygons,
-                           CGAL::parameters::visitor(exact::detail::OrientSoupVisitor{&counters}));
+                           CGAL::parameters::visitor(soup::OrientSoupVisitor{&counters}));
   log.vertex_copies_added = points.size() - points_before;
   log.non_manifold_vertices_split = counters.non_manifold_vertices.size();
   log.non_manifold_edges = counters.non_manifold_edges.size();

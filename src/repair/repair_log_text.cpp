@@ -20,7 +20,7 @@ std::string plural(std::size_t n, const char* one, const char* many) {
 
 }  // namespace
 
-std::string repair_log_text(const RepairLog& log) {
+std::string repair_log_text(const RepairLog& log, std::string_view not_filled_reason) {
   std::string out = "repair\n";
   const auto line = [&out](const char* label, const std::string& value) {
     fmt::format_to(std::back_inserter(out), "  {:<28} {}\n", label, value);
@@ -53,7 +53,7 @@ std::string repair_log_text(const RepairLog& log) {
             ? fmt::format("{} found, {} filled ({} added), {} left open", log.holes_found,
                           log.holes_filled, plural(log.hole_facets_added, "facet", "facets"),
                           log.holes_not_filled)
-            : fmt::format("{} found, not filled (--fill-holes not given)", log.holes_found);
+            : fmt::format("{} found, not filled ({})", log.holes_found, not_filled_reason);
     if (log.seams_at_shared_edges > 0) {
       holes += fmt::format("; {} along non-manifold edges left as they are",
                            plural(log.seams_at_shared_edges, "border", "borders"));

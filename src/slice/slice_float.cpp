@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <limits>
 
-#include "slice/crossing_predicates_internal.hpp"
-#include "slice/grid_search_internal.hpp"
+#include "predicates/crossing_predicates.hpp"
+#include "predicates/grid_search.hpp"
 
 namespace strata {
 

@@ -8,7 +8,7 @@
 #include "strata/contour/contour.hpp"
 #include "strata/core/result.hpp"
 #include "strata/pipeline/layer_sink.hpp"
-#include "strata/pipeline/slice_model.hpp"
+#include "strata/pipeline/run_slice.hpp"
 
 namespace strata::validate::detail {
 

@@ -29,7 +29,7 @@
 #include <set>
 #include <utility>
 
-#include "exact/orient_soup_visitor_internal.hpp"
+#include "soup/orient_soup_visitor.hpp"
 #include "strata/validate/contour_metrics.hpp"
 #include "validate/model_scale_internal.hpp"
 #include "validate/reference_slicer_internal.hpp"
@@ -220,10 +220,9 @@ void ReferenceSlicer::Impl::build(const IndexedMesh& input) {
     // non-manifold vertices and edges, and only reverses facets otherwise.
     std::vector<Point3> copy_points = points;
     std::vector<Polygon> copy_polygons = polygons;
-    exact::detail::OrientSoupCounts counters;
+    soup::OrientSoupCounts counters;
     const bool oriented = PMP::orient_polygon_soup(
-        copy_points, copy_polygons,
-        CGAL::parameters::visitor(exact::detail::OrientSoupVisitor{&counters}));
+        copy_points, copy_polygons, CGAL::parameters::visitor(soup::OrientSoupVisitor{&counters}));
     const std::size_t duplicated = copy_points.size() - points.size();
     if (!oriented || duplicated > 0 || !counters.non_manifold_edges.empty()) {
       refuse(ReferenceSkip::NonManifold,

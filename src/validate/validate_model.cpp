@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "strata/exact/slice_exact.hpp"
-#include "strata/pipeline/slice_model.hpp"
+#include "strata/slicer/slice_model.hpp"
 #include "strata/validate/slice_comparison.hpp"
 #include "validate/paired_run_internal.hpp"
 #include "validate/reference_slicer_internal.hpp"
@@ -39,7 +39,7 @@ Result<ValidationReport> validate_model(const IndexedMesh& mesh, const GridSpec&
                                         const ValidateOptions& validate_options) {
   if (options.fill_rule == FillRule::Winding) {
     return Error{ErrorCode::Usage,
-                 "validate compares the paths under --fill-rule nonzero or evenodd; the exact path "
+                 "validate compares the paths under fill rule nonzero or evenodd; the exact path "
                  "does not implement winding (solid angles are not exact)",
                  {}};
   }

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "strata/core/error.hpp"
-#include "strata/export/output_file.hpp"
+#include "strata/io/output_file.hpp"
 #include "strata/view/view_page.hpp"
 #include "view/encode_internal.hpp"
 #include "view/view_template_internal.hpp"

@@ -4,7 +4,7 @@
 // to a triangle is a rational function of the coordinates, so every branch below is the sign of
 // a polynomial in the input doubles (and t), taken by the filtered evaluation.
 
-#include "slice/filtered_sign_internal.hpp"
+#include "predicates/filtered_sign.hpp"
 #include "strata/mesh/vec3.hpp"
 
 namespace strata::detail {

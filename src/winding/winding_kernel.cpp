@@ -1,9 +1,10 @@
+#include "winding/winding_kernel.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 #include "strata/contour/assemble_contours.hpp"
 #include "strata/fill/scanline_fill.hpp"
-#include "winding/winding_kernel_internal.hpp"
 
 namespace strata::detail {
 

@@ -8,7 +8,7 @@
 
 #include "strata/io/read_mesh.hpp"
 #include "strata/mesh/weld_vertices.hpp"
-#include "strata/pipeline/slice_model.hpp"
+#include "strata/slicer/slice_model.hpp"
 #include "support/corpus.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"

@@ -7,7 +7,7 @@
 
 #include "strata/mesh/triangle_soup.hpp"
 #include "strata/mesh/weld_vertices.hpp"
-#include "strata/pipeline/slice_model.hpp"
+#include "strata/slicer/slice_model.hpp"
 
 namespace strata::testing {
 

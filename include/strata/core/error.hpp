@@ -5,8 +5,9 @@
 
 namespace strata {
 
-/// What kind of failure an Error is; the values are the CLI's exit codes (SPEC §4).
-enum class ErrorCode { BadInput = 1, Usage = 2, Internal = 3 };
+/// What kind of failure an Error is. A program maps these to its own status (the command line's
+/// exit codes of SPEC §4: src/cli/exit_code.cpp).
+enum class ErrorCode { BadInput, Usage, Internal };
 
 /// An expected failure: bad input, bad usage, or an internal error caught at a module boundary.
 /// `location` names the file and, where it applies, the line or facet ("cube.stl:12",
@@ -28,8 +29,8 @@ class InternalError : public std::logic_error {
 
 }  // namespace strata
 
-/// Checks an invariant; throws strata::InternalError so that tests can catch it and the CLI can
-/// exit with code 3 instead of aborting.
+/// Checks an invariant; throws strata::InternalError so that tests can catch it and a caller can
+/// report an internal error instead of aborting.
 #define STRATA_ASSERT(cond, msg)                                                             \
   do {                                                                                       \
     if (!(cond)) {                                                                           \

@@ -5,7 +5,7 @@
 
 #include "strata/core/result.hpp"
 #include "strata/mesh/indexed_mesh.hpp"
-#include "strata/pipeline/slice_model.hpp"
+#include "strata/pipeline/run_slice.hpp"
 #include "strata/slice/grid_spec.hpp"
 #include "strata/slice/slice_options.hpp"
 
@@ -63,7 +63,7 @@ struct ExactSliceReport {
 /// open chains. Contour points are exact values rounded once to double.
 ///
 /// @param report when not null, receives what the soup repair did and the per-layer methods
-/// @return the summary; Error{Usage} for --fill-rule winding; Error{BadInput} for a mesh with
+/// @return the summary; Error{Usage} for FillRule::Winding; Error{BadInput} for a mesh with
 ///         non-finite coordinates or vertex indices out of range; Error{Internal} when CGAL or an
 ///         invariant fails (every sink is aborted then); or the first sink error.
 /// Thread safety: layers are computed in parallel (options.threads); nothing global is installed.

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "strata/export/cells_format.hpp"
+#include "strata/io/cells_format.hpp"
 #include "strata/pipeline/layer_sink.hpp"
 
 namespace strata::io {

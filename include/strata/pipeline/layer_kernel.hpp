@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 
 #include "strata/contour/contour.hpp"
 #include "strata/fill/scanline_fill.hpp"
@@ -16,12 +17,15 @@ struct LayerGeometry {
 
 /// A slicing kernel: the fast (double + exact fallback) or the exact (CGAL) path. The pipeline
 /// calls prepare_batch(k0, k1) from one thread, then compute_layer(k) for every k in [k0, k1),
-/// possibly concurrently; batches come in increasing order and do not overlap.
+/// possibly concurrently; batches come in increasing order and do not overlap. Either may throw:
+/// run_slice then aborts the sinks and returns Error{Internal}.
 class LayerKernel {
  public:
   virtual ~LayerKernel() = default;
   virtual void prepare_batch(std::uint32_t k0, std::uint32_t k1) = 0;
   virtual LayerGeometry compute_layer(std::uint32_t k) const = 0;
+  /// How failure messages name the kernel: "fast path", "exact path".
+  virtual std::string_view name() const { return "layer kernel"; }
 };
 
 }  // namespace strata

@@ -6,7 +6,7 @@
 
 #include "strata/mesh/indexed_mesh.hpp"
 #include "strata/pipeline/layer_sink.hpp"
-#include "strata/pipeline/slice_model.hpp"
+#include "strata/pipeline/run_slice.hpp"
 #include "strata/slice/grid_spec.hpp"
 #include "strata/slice/slice_options.hpp"
 #include "strata/validate/validate_options.hpp"

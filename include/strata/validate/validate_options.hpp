@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "strata/pipeline/slice_model.hpp"
+#include "strata/pipeline/run_slice.hpp"
 
 namespace strata::validate {
 

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "strata/export/cells_reader.hpp"
+#include "strata/io/read_cells.hpp"
 #include "strata/io/write_stl.hpp"
 #include "strata/mesh/primitive_models.hpp"
 #include "support/run_cli.hpp"

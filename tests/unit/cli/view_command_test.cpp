@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "strata/export/cells_format.hpp"
+#include "strata/io/cells_format.hpp"
 #include "strata/io/write_stl.hpp"
 #include "strata/mesh/primitive_models.hpp"
 #include "support/run_cli.hpp"

@@ -1,3 +1,5 @@
+#include "contour/loop_check.hpp"
+
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
@@ -5,8 +7,6 @@
 #include <cmath>
 #include <cstdint>
 #include <vector>
-
-#include "contour/loop_check_internal.hpp"
 
 namespace strata::detail {
 namespace {

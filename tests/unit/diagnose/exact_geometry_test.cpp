@@ -1,9 +1,9 @@
+#include "diagnose/exact_geometry.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <vector>
-
-#include "diagnose/exact_geometry_internal.hpp"
 
 namespace strata::diagnose::detail {
 namespace {

@@ -19,7 +19,7 @@
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
 #include "strata/pipeline/layer_sink.hpp"
-#include "strata/pipeline/slice_model.hpp"
+#include "strata/slicer/slice_model.hpp"
 
 namespace strata::exact_test {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "exact_test_support.hpp"
-#include "strata/export/cells_reader.hpp"
+#include "strata/io/read_cells.hpp"
 #include "strata/io/read_mesh.hpp"
 
 namespace strata {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "export_test_support.hpp"
-#include "strata/export/cells_reader.hpp"
+#include "strata/io/read_cells.hpp"
 
 namespace strata::io {
 namespace {

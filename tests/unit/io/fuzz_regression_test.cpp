@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "strata/export/cells_reader.hpp"
+#include "strata/io/read_cells.hpp"
 #include "strata/io/read_mesh.hpp"
 #include "support/temp_dir.hpp"
 #include "support/text_meshes.hpp"

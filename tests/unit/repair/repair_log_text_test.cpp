@@ -26,7 +26,10 @@ TEST(RepairLogText, SaysWhenHolesWereNotFilled) {
   RepairLog log;
   log.polygon_mesh = true;
   log.holes_found = 3;
-  EXPECT_NE(repair_log_text(log).find("3 found, not filled (--fill-holes not given)"),
+  EXPECT_NE(repair_log_text(log).find("3 found, not filled (filling not requested)"),
+            std::string::npos);
+  EXPECT_NE(repair_log_text(log, "--fill-holes not given")
+                .find("3 found, not filled (--fill-holes not given)"),
             std::string::npos);
   log.fill_holes_requested = true;
   log.holes_filled = 2;

@@ -7,7 +7,7 @@
 
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
-#include "strata/pipeline/slice_model.hpp"
+#include "strata/slicer/slice_model.hpp"
 
 namespace strata::validate {
 namespace {

@@ -10,7 +10,7 @@
 #include "../pipeline/collecting_sink_for_tests.hpp"
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
-#include "strata/pipeline/slice_model.hpp"
+#include "strata/slicer/slice_model.hpp"
 
 namespace strata {
 namespace {

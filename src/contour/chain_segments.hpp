@@ -1,5 +1,8 @@
 #pragma once
 
+// Chaining a layer's segments into loops by mesh topology; shared with the exact path, which
+// chains its exact crossing points the same way.
+
 #include <algorithm>
 #include <cstdint>
 #include <vector>

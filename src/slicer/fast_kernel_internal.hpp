@@ -1,6 +1,7 @@
 #pragma once
 
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "strata/pipeline/layer_kernel.hpp"
@@ -17,6 +18,7 @@ class FastKernel final : public LayerKernel {
 
   void prepare_batch(std::uint32_t k0, std::uint32_t k1) override;
   LayerGeometry compute_layer(std::uint32_t k) const override;
+  std::string_view name() const override { return "fast path"; }
 
  private:
   /// The layer's contours when its chained loops are not simple: the exact outline of the

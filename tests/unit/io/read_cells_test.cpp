@@ -1,4 +1,4 @@
-#include "strata/export/cells_reader.hpp"
+#include "strata/io/read_cells.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "export_test_support.hpp"
+#include "../export/export_test_support.hpp"
 #include "strata/export/cells_writer.hpp"
 
 namespace strata::io {

@@ -1,9 +1,9 @@
-#include "strata/pipeline/slice_model.hpp"
+#include "strata/slicer/slice_model.hpp"
 
 #include <gtest/gtest.h>
 
+#include "../pipeline/collecting_sink_for_tests.hpp"
 #include "../slice/box_mesh_for_tests.hpp"
-#include "collecting_sink_for_tests.hpp"
 
 namespace strata {
 namespace {

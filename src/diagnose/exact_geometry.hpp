@@ -1,5 +1,7 @@
 #pragma once
 
+// Exact geometry on a mesh, shared with repair (shell volumes) and the diagnostics.
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>

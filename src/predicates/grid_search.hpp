@@ -1,5 +1,7 @@
 #pragma once
 
+// Grid searches shared by the slicing and fill stages.
+
 #include <cmath>
 #include <cstdint>
 

@@ -1,7 +1,10 @@
 #pragma once
 
+// The winding kernel, shared with the slicer, which picks it for FillRule::Winding.
+
 #include <atomic>
 #include <cstddef>
+#include <string_view>
 #include <vector>
 
 #include "strata/pipeline/layer_kernel.hpp"
@@ -33,6 +36,7 @@ class WindingKernel final : public LayerKernel {
 
   void prepare_batch(std::uint32_t k0, std::uint32_t k1) override;
   LayerGeometry compute_layer(std::uint32_t k) const override;
+  std::string_view name() const override { return "fast path"; }
 
   const winding::BoundaryCaps& caps() const { return caps_; }
   /// Cells whose first estimate fell within the guard band and were evaluated again.

@@ -11,6 +11,8 @@
 #include "strata/mesh/indexed_mesh.hpp"
 #include "strata/pipeline/layer_kernel.hpp"
 #include "strata/pipeline/layer_sink.hpp"
+#include "strata/slice/grid_spec.hpp"
+#include "strata/slice/slice_options.hpp"
 
 namespace strata {
 
@@ -62,20 +64,15 @@ struct SliceSummary {
 /// Reports progress: layers done out of the total.
 using ProgressCallback = std::function<void(std::uint32_t done, std::uint32_t total)>;
 
-/// Runs any kernel over all layers in batches, marks the shell (on `mesh`, which the kernel slices)
-/// and streams every classified layer to the sinks in order, holding only the shell window.
+/// The engine: runs any kernel over all layers in batches, marks the shell (on `mesh`, which the
+/// kernel slices) and streams every classified layer to the sinks in order, holding only the
+/// shell window.
+/// @return the summary; the first sink error; or Error{Internal} when the kernel, the shell step
+///         or a sink throws, on any thread (the kernel's name() begins the message). Every sink is
+///         aborted on any failure.
 Result<SliceSummary> run_slice(const IndexedMesh& mesh, const GridSpec& grid,
                                const SliceOptions& options, LayerKernel& kernel,
                                std::span<LayerSink* const> sinks,
                                const ProgressCallback& progress = {});
-
-/// Slices a mesh on a grid with the fast path and streams every layer, classified, to the sinks
-/// in order. Only the window of layers the shell reaches is held in memory.
-/// Under FillRule::Winding the cells come from the generalized winding number (src/winding)
-/// instead of the crossing rule; contours and open chains are the same as under the others.
-/// @return the summary; or the first sink error (every sink is aborted then).
-Result<SliceSummary> slice_model(const IndexedMesh& mesh, const GridSpec& grid,
-                                 const SliceOptions& options, std::span<LayerSink* const> sinks,
-                                 const ProgressCallback& progress = {});
 
 }  // namespace strata

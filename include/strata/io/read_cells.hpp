@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "strata/core/result.hpp"
-#include "strata/export/cells_format.hpp"
+#include "strata/io/cells_format.hpp"
 #include "strata/voxel/cell_class.hpp"
 
 namespace strata::io {

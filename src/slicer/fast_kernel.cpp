@@ -2,9 +2,9 @@
 #include <exception>
 #include <new>
 
-#include "exact/exact_outline_internal.hpp"
-#include "pipeline/fast_kernel_internal.hpp"
+#include "slicer/fast_kernel_internal.hpp"
 #include "strata/contour/assemble_contours.hpp"
+#include "strata/exact/outline_contours.hpp"
 #include "strata/fill/scanline_fill.hpp"
 
 namespace strata::detail {
@@ -57,7 +57,7 @@ LayerContours FastKernel::outline_layer(LayerContours chained,
   }
   LayerContours out;
   try {
-    out = exact::detail::outline_contours(mesh_, candidates, grid_, k, options_.fill_rule);
+    out = exact::outline_contours(mesh_, candidates, grid_, k, options_.fill_rule);
   } catch (const std::bad_alloc&) {
     throw;
   } catch (const std::exception&) {

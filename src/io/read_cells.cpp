@@ -1,4 +1,4 @@
-#include "strata/export/cells_reader.hpp"
+#include "strata/io/read_cells.hpp"
 
 #include <fmt/format.h>
 
@@ -16,7 +16,7 @@
 #include <system_error>
 #include <vector>
 
-#include "export/sink_support_internal.hpp"
+#include "io/little_endian.hpp"
 #include "strata/io/scan_number.hpp"
 
 namespace strata::io {

@@ -15,8 +15,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "contour/chain_segments_internal.hpp"
-#include "slice/filtered_sign_internal.hpp"
+#include "contour/chain_segments.hpp"
+#include "predicates/filtered_sign.hpp"
 #include "strata/mesh/vec3.hpp"
 
 namespace strata::detail {

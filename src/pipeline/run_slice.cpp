@@ -1,4 +1,4 @@
-#include "strata/pipeline/slice_model.hpp"
+#include "strata/pipeline/run_slice.hpp"
 
 #include <fmt/format.h>
 #include <tbb/global_control.h>
@@ -7,13 +7,11 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
-#include <memory>
+#include <new>
 #include <optional>
 #include <string>
 
-#include "pipeline/fast_kernel_internal.hpp"
 #include "strata/voxel/boundary_shell.hpp"
-#include "winding/winding_kernel_internal.hpp"
 
 namespace strata {
 
@@ -25,24 +23,6 @@ constexpr double kBatchMemoryBytes = 2.0e9;
 
 void abort_all(std::span<LayerSink* const> sinks) {
   for (LayerSink* sink : sinks) sink->abort();
-}
-
-void add_winding_diagnostics(const detail::WindingKernel& kernel, SliceSummary& summary) {
-  const winding::BoundaryCaps& caps = kernel.caps();
-  if (caps.boundary_edges == 0) {
-    summary.diagnostics.push_back(
-        {Severity::Info, "winding.closed",
-         "fill rule winding: the mesh has no boundary, so its winding number is the integer the "
-         "crossing rule gives and every cell was decided exactly"});
-    return;
-  }
-  summary.diagnostics.push_back(
-      {Severity::Info, "winding.caps",
-       fmt::format("fill rule winding: {} boundary edges in {} components were capped; the caps' "
-                   "winding number was approximated hierarchically and evaluated again for {} "
-                   "cells within {} of 1/2",
-                   caps.boundary_edges, caps.components, kernel.guard_evaluations(),
-                   detail::WindingKernel::kGuardBand)});
 }
 
 /// "3, 4, 5" for the first few layers that `has` picks, "3, 4, 5, ..." when there are more.
@@ -89,12 +69,10 @@ void add_loop_diagnostics(SliceSummary& summary) {
   }
 }
 
-}  // namespace
-
-Result<SliceSummary> run_slice(const IndexedMesh& mesh, const GridSpec& grid,
-                               const SliceOptions& options, LayerKernel& kernel,
-                               std::span<LayerSink* const> sinks,
-                               const ProgressCallback& progress) {
+Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
+                                const SliceOptions& options, LayerKernel& kernel,
+                                std::span<LayerSink* const> sinks,
+                                const ProgressCallback& progress) {
   const auto started = std::chrono::steady_clock::now();
   std::optional<tbb::global_control> thread_limit;
   if (options.threads > 0) {
@@ -109,7 +87,7 @@ Result<SliceSummary> run_slice(const IndexedMesh& mesh, const GridSpec& grid,
   if (options.shell_mode == ShellMode::Layers && shell.unequal_cell_sizes()) {
     summary.diagnostics.push_back(
         {Severity::Warning, "shell.unequal_cell_sizes",
-         fmt::format("--shell-mode layers with unequal cell sizes ({} x {} x {} mm): rings are "
+         fmt::format("shell mode layers with unequal cell sizes ({} x {} x {} mm): rings are "
                      "counted with the smallest, {} rings of {} mm",
                      grid.dx, grid.dy, grid.dz, shell.rings(),
                      std::min({grid.dx, grid.dy, grid.dz}))});
@@ -224,17 +202,24 @@ Result<SliceSummary> run_slice(const IndexedMesh& mesh, const GridSpec& grid,
   return summary;
 }
 
-Result<SliceSummary> slice_model(const IndexedMesh& mesh, const GridSpec& grid,
-                                 const SliceOptions& options, std::span<LayerSink* const> sinks,
-                                 const ProgressCallback& progress) {
-  if (options.fill_rule == FillRule::Winding) {
-    detail::WindingKernel kernel(mesh, grid, options);
-    auto summary = run_slice(mesh, grid, options, kernel, sinks, progress);
-    if (summary) add_winding_diagnostics(kernel, *summary);
-    return summary;
+}  // namespace
+
+Result<SliceSummary> run_slice(const IndexedMesh& mesh, const GridSpec& grid,
+                               const SliceOptions& options, LayerKernel& kernel,
+                               std::span<LayerSink* const> sinks,
+                               const ProgressCallback& progress) {
+  // A failure on a worker thread reaches here through tbb::parallel_for; a caller gets an Error
+  // and no partial output, whichever kernel failed.
+  try {
+    return run_layers(mesh, grid, options, kernel, sinks, progress);
+  } catch (const std::bad_alloc&) {
+    abort_all(sinks);
+    return Error{ErrorCode::Internal, fmt::format("{}: out of memory", kernel.name()), {}};
+  } catch (const std::exception& e) {
+    // CGAL's failures (CGAL::Failure_exception) and broken invariants (InternalError) alike.
+    abort_all(sinks);
+    return Error{ErrorCode::Internal, fmt::format("{} failed: {}", kernel.name(), e.what()), {}};
   }
-  detail::FastKernel kernel(mesh, grid, options);
-  return run_slice(mesh, grid, options, kernel, sinks, progress);
 }
 
 }  // namespace strata

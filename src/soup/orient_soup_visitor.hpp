@@ -1,5 +1,8 @@
 #pragma once
 
+// Shared by the exact path, repair and the reference slicer: every user of CGAL's
+// orient_polygon_soup counts what it did in the same way.
+
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 
 #include <algorithm>
@@ -8,7 +11,7 @@
 #include <set>
 #include <utility>
 
-namespace strata::exact::detail {
+namespace strata::soup {
 
 /// What CGAL's orient_polygon_soup reports while it orients a soup.
 struct OrientSoupCounts {
@@ -30,4 +33,4 @@ struct OrientSoupVisitor : CGAL::Polygon_mesh_processing::Default_orientation_vi
   void polygon_orientation_reversed(std::size_t) { ++counts->reversed; }
 };
 
-}  // namespace strata::exact::detail
+}  // namespace strata::soup

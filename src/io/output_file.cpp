@@ -1,4 +1,4 @@
-#include "strata/export/output_file.hpp"
+#include "strata/io/output_file.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>

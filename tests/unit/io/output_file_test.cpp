@@ -1,11 +1,11 @@
-#include "strata/export/output_file.hpp"
+#include "strata/io/output_file.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>
 
-#include "export_test_support.hpp"
+#include "../export/export_test_support.hpp"
 
 namespace strata::io {
 namespace {

@@ -7,7 +7,7 @@
 //   (lo.x - c) * w + (z - lo.z) * (hi.x - lo.x),
 // a polynomial in the input coordinates and the grid's double values, evaluated exactly.
 
-#include "slice/filtered_sign_internal.hpp"
+#include "predicates/filtered_sign.hpp"
 #include "strata/mesh/vec3.hpp"
 
 namespace strata::detail {
