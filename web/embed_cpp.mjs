@@ -1,12 +1,14 @@
 // Writes a C++ source that holds a file's bytes, for the library to embed the built page:
-//   node web/embed_cpp.mjs IN.html OUT.cpp
+//   node web/embed_cpp.mjs IN.html OUT.cpp [HEADER NAMESPACE FUNCTION]
+// (default: view/view_template_internal.hpp, strata::view::detail, view_page_template).
 // The bytes become adjacent string literals (printable ASCII as is, the rest as octal escapes),
 // which compile faster than an array of numbers.
 import { readFileSync, writeFileSync, renameSync } from 'node:fs';
 
-const [input, output] = process.argv.slice(2);
+const [input, output, header = 'view/view_template_internal.hpp', namespace = 'strata::view::detail',
+  fn = 'view_page_template'] = process.argv.slice(2);
 if (!input || !output) {
-  console.error('usage: node web/embed_cpp.mjs IN.html OUT.cpp');
+  console.error('usage: node web/embed_cpp.mjs IN.html OUT.cpp [HEADER NAMESPACE FUNCTION]');
   process.exit(2);
 }
 const bytes = readFileSync(input);
@@ -27,18 +29,18 @@ for (const b of bytes) {
 }
 if (line) lines.push(`"${line}"`);
 const source = `// Generated from ${input.split('/').pop()} by web/embed_cpp.mjs at build time; not edited.
-#include "view/view_template_internal.hpp"
+#include "${header}"
 
-namespace strata::view::detail {
+namespace ${namespace} {
 
 namespace {
 constexpr char kPage[] =
 ${lines.join('\n')};
 }  // namespace
 
-std::string_view view_page_template() { return {kPage, sizeof(kPage) - 1}; }
+std::string_view ${fn}() { return {kPage, sizeof(kPage) - 1}; }
 
-}  // namespace strata::view::detail
+}  // namespace ${namespace}
 `;
 writeFileSync(output + '.tmp', source);
 renameSync(output + '.tmp', output);
