@@ -6,10 +6,10 @@ const FIELDS = [
   { key: 'dx', flag: '--dx', label: 'cell size in x', unit: 'mm', value: 0.1, min: 0, exclusive: true, step: 'any', group: 'dxdy' },
   { key: 'dy', flag: '--dy', label: 'cell size in y', unit: 'mm', value: 0.1, min: 0, exclusive: true, step: 'any', group: 'dxdy' },
   { key: 'shell', flag: '--shell', label: 'boundary shell thickness t', unit: 'mm', value: 0.5, min: 0, step: 'any' },
-  { key: 'shell_mode', flag: '--shell-mode', label: 'shell rule', choices: [['distance', 'distance: centre closer than t'], ['layers', 'layers: int(t/d) rings (published)']] },
-  { key: 'fill_rule', flag: '--fill-rule', label: 'fill rule', choices: [['nonzero', 'nonzero'], ['evenodd', 'evenodd (published)'], ['winding', 'winding (open meshes)']] },
+  { key: 'shell_mode', flag: '--shell-mode', label: 'shell rule', choices: [['distance', 'distance'], ['layers', 'layers (published)']], hint: 'distance: cells whose centre is closer than t to the surface; layers: int(t/d) rings of cells' },
+  { key: 'fill_rule', flag: '--fill-rule', label: 'fill rule', choices: [['nonzero', 'nonzero'], ['evenodd', 'evenodd (published)'], ['winding', 'winding']], hint: 'nonzero: union of all shells; evenodd: parity (the published rule); winding: generalized winding number (open meshes)' },
   { key: 'scan_offset', flag: '--scan-offset', label: 'scanline shift in +y', unit: 'mm', value: 0, step: 'any' },
-  { key: 'kernel', flag: '--kernel', label: 'arithmetic', choices: [['fast', 'fast: double + exact predicates'], ['exact', 'exact: CGAL']] },
+  { key: 'kernel', flag: '--kernel', label: 'arithmetic', choices: [['fast', 'fast'], ['exact', 'exact (CGAL)']], hint: 'fast: double with exact predicates; exact: CGAL' },
   { key: 'origin', flag: '--origin', label: 'grid origin X,Y,Z', unit: 'mm', text: true, placeholder: "model's minimum corner" },
   { key: 'repair', flag: '--repair', label: 'repair the mesh first', check: true },
   { key: 'fill_holes', flag: '--fill-holes', label: 'with repair: fill holes', check: true },
@@ -28,7 +28,7 @@ export class OptionsForm {
       if (field.key === 'cell') form.append(mode);
       const row = document.createElement('label');
       row.className = `row${field.group ? ` group-${field.group}` : ''}${field.check ? ' check' : ''}`;
-      row.title = `${field.flag}${field.unit ? ` (${field.unit})` : ''}`;
+      row.title = `${field.flag}${field.unit ? ` (${field.unit})` : ''}${field.hint ? `: ${field.hint}` : ''}`;
       let input;
       if (field.choices) {
         input = document.createElement('select');
