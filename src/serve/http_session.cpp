@@ -2,6 +2,7 @@
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <chrono>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -40,7 +41,9 @@ class Session : public std::enable_shared_from_this<Session> {
   void read_header() {
     header_.emplace();
     header_->header_limit(16 * 1024);
-    header_->body_limit(kMaxRequestBody);
+    // The body's limit depends on the route: checked once the header is read. (Not boost::none:
+    // Boost 1.74 compares a Content-Length with the optional and refuses every body then.)
+    header_->body_limit(std::numeric_limits<std::uint64_t>::max());
     stream_.expires_after(120s);
     http::async_read_header(
         stream_, buffer_, *header_,
@@ -78,10 +81,12 @@ class Session : public std::enable_shared_from_this<Session> {
 
   void start_upload(const Route& route) {
     const std::uint64_t limit = context_.options.max_upload_bytes;
+    // A length up front, so that a large file is refused before a byte of it is stored.
     const auto length = header_->content_length();
-    if (length && *length > limit) {
-      return reply(too_large(), true);
+    if (!length) {
+      return reply(error_response(411, "an upload needs a Content-Length"), true);
     }
+    if (*length > limit) return reply(too_large(), true);
     auto id = context_.store.reserve(route.name);
     if (!id) return reply(error_response(503, id.error().message), true);
     upload_id_ = *id;
