@@ -1,8 +1,10 @@
 // Builds the page of strata view: bundles web/src (three.js, uPlot and their CSS included) and
-// inlines JavaScript and CSS into one HTML file that holds the data marker exactly once.
+// inlines JavaScript and CSS into one HTML file that holds the data marker exactly once; and the
+// app page of strata serve (web/src/app/), which shows that page's views in frames.
 //
 //   node web/build.mjs OUT.html                  the template (the marker still in place)
 //   node web/build.mjs OUT.html --data FILE.json a page with that data put in place of the marker
+//   node web/build.mjs OUT.html --app            the app page of strata serve
 
 import { mkdir, readFile, rename, writeFile } from 'node:fs/promises';
 import path from 'node:path';
@@ -23,10 +25,25 @@ function occurrences(text, what) {
 
 /** The page template: one HTML string holding MARKER exactly once. */
 export async function buildTemplate() {
+  const html = await bundlePage(path.join(source, 'main.js'), path.join(source, 'index.html'));
+  const n = occurrences(html, MARKER);
+  if (n !== 1) throw new BuildError(`the page holds the marker ${MARKER} ${n} times, not once`);
+  return html;
+}
+
+/** The app page of strata serve: web/src/app/ bundled into one HTML string. */
+export async function buildAppPage() {
+  const html = await bundlePage(path.join(source, 'app', 'main.js'), path.join(source, 'app', 'index.html'));
+  if (html.includes(MARKER)) throw new BuildError(`the app page holds the data marker ${MARKER}`);
+  return html;
+}
+
+/** Bundles an entry module and inlines it, with its CSS, into an HTML file's two slots. */
+async function bundlePage(entry, htmlFile) {
   let result;
   try {
     result = await esbuild.build({
-      entryPoints: [path.join(source, 'main.js')],
+      entryPoints: [entry],
       bundle: true,
       format: 'iife',
       minify: true,
@@ -49,16 +66,13 @@ export async function buildTemplate() {
   if (/<\/style/i.test(css)) throw new BuildError('the bundled CSS contains "</style" and cannot be inlined');
   if (js.includes(MARKER) || css.includes(MARKER)) throw new BuildError(`the bundle contains the data marker ${MARKER}`);
 
-  const template = await readFile(path.join(source, 'index.html'), 'utf8');
+  const template = await readFile(htmlFile, 'utf8');
   for (const slot of ['<!--STRATA_STYLE-->', '<!--STRATA_SCRIPT-->']) {
-    if (occurrences(template, slot) !== 1) throw new BuildError(`web/src/index.html must hold ${slot} exactly once`);
+    if (occurrences(template, slot) !== 1) throw new BuildError(`${path.relative(here, htmlFile)} must hold ${slot} exactly once`);
   }
-  const html = template
+  return template
     .replace('<!--STRATA_STYLE-->', () => `<style>\n${css}</style>`)
     .replace('<!--STRATA_SCRIPT-->', () => `<script>\n${js}</script>`);
-  const n = occurrences(html, MARKER);
-  if (n !== 1) throw new BuildError(`the page holds the marker ${MARKER} ${n} times, not once`);
-  return html;
 }
 
 /** Puts JSON text in place of the marker, as strata view does ("</" escaped). */
@@ -79,9 +93,9 @@ async function writeAtomically(file, text) {
   await rename(temporary, file);
 }
 
-/** Builds and writes OUT (with the data of dataFile when given). */
-export async function buildPage(out, dataFile = null) {
-  let html = await buildTemplate();
+/** Builds and writes OUT (with the data of dataFile when given; the app page when app). */
+export async function buildPage(out, dataFile = null, app = false) {
+  let html = app ? await buildAppPage() : await buildTemplate();
   if (dataFile) {
     let text;
     try {
@@ -96,14 +110,17 @@ export async function buildPage(out, dataFile = null) {
 }
 
 async function main(argv) {
-  const usage = 'usage: node web/build.mjs OUT.html [--data FILE.json]';
+  const usage = 'usage: node web/build.mjs OUT.html [--data FILE.json | --app]';
   let out = null;
   let data = null;
+  let app = false;
   for (let n = 0; n < argv.length; ++n) {
     const a = argv[n];
     if (a === '--data') {
       data = argv[++n];
       if (!data) throw new BuildError(`--data needs a file\n${usage}`);
+    } else if (a === '--app') {
+      app = true;
     } else if (a === '-h' || a === '--help') {
       console.log(usage);
       return;
@@ -115,9 +132,9 @@ async function main(argv) {
       out = a;
     }
   }
-  if (!out) throw new BuildError(usage);
+  if (!out || (app && data)) throw new BuildError(usage);
   const started = performance.now();
-  const bytes = await buildPage(out, data);
+  const bytes = await buildPage(out, data, app);
   console.log(`wrote ${out} (${(bytes / 1024).toFixed(0)} KiB) in ${((performance.now() - started) / 1000).toFixed(1)} s`);
 }
 

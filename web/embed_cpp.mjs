@@ -1,13 +1,15 @@
 // Writes a C++ source that holds a file's bytes, for the library to embed the built page:
-//   node web/embed_cpp.mjs IN.html OUT.cpp
+//   node web/embed_cpp.mjs IN.html OUT.cpp [HEADER NAMESPACE FUNCTION]
+// (default: view/view_template_internal.hpp, strata::view::detail, view_page_template).
 // The bytes become string literals (printable ASCII as is, the rest as octal escapes), which
 // compile faster than an array of numbers; each piece stays under the 65,536 characters that
 // compilers are required to support in one literal, and the pieces are joined once at run time.
 import { readFileSync, writeFileSync, renameSync } from 'node:fs';
 
-const [input, output] = process.argv.slice(2);
+const [input, output, header = 'view/view_template_internal.hpp', namespace = 'strata::view::detail',
+  fn = 'view_page_template'] = process.argv.slice(2);
 if (!input || !output) {
-  console.error('usage: node web/embed_cpp.mjs IN.html OUT.cpp');
+  console.error('usage: node web/embed_cpp.mjs IN.html OUT.cpp [HEADER NAMESPACE FUNCTION]');
   process.exit(2);
 }
 const bytes = readFileSync(input);
@@ -41,9 +43,9 @@ endPiece();
 const source = `// Generated from ${input.split('/').pop()} by web/embed_cpp.mjs at build time; not edited.
 #include <string>
 
-#include "view/view_template_internal.hpp"
+#include "${header}"
 
-namespace strata::view::detail {
+namespace ${namespace} {
 
 namespace {
 // sizeof - 1 of each literal keeps any NUL byte of the file.
@@ -53,7 +55,7 @@ ${pieces.map((p) => `STRATA_PIECE(\n${p})`).join(',\n')}};
 #undef STRATA_PIECE
 }  // namespace
 
-std::string_view view_page_template() {
+std::string_view ${fn}() {
   static const std::string page = [] {
     std::string joined;
     for (std::string_view piece : kPieces) joined.append(piece);
@@ -62,7 +64,7 @@ std::string_view view_page_template() {
   return page;
 }
 
-}  // namespace strata::view::detail
+}  // namespace ${namespace}
 `;
 writeFileSync(output + '.tmp', source);
 renameSync(output + '.tmp', output);

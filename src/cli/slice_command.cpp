@@ -27,6 +27,7 @@
 #include "strata/export/svg_writer.hpp"
 #include "strata/io/output_file.hpp"
 #include "strata/mesh/weld_vertices.hpp"
+#include "strata/pipeline/cancel_sink.hpp"
 #include "strata/repair/repair_log_json.hpp"
 #include "strata/repair/repair_log_text.hpp"
 #include "strata/repair/repair_mesh.hpp"
@@ -90,49 +91,50 @@ std::string file_url(const fs::path& path) {
 
 }  // namespace
 
-int run_slice(const SliceCommandOptions& o) {
+Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRunControl& control) {
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
   auto options = to_slice_options(o.slice);
-  if (!options) return report_error(options.error());
+  if (!options) return options.error();
   auto formats = parse_formats(o.formats);
-  if (!formats) return report_error(formats.error());
+  if (!formats) return formats.error();
+  const auto cancelled = [&] {
+    return control.cancel != nullptr && control.cancel->load(std::memory_order_relaxed);
+  };
+  const Error cancel_error{ErrorCode::Internal, kCancelledMessage, {}};
 
+  SliceOutcome out;
   auto model = load_model(o.model);
-  if (!model) return report_error(model.error());
-  for (const auto& d : model->soup.diagnostics) {
-    std::fprintf(stderr, "strata: warning: %s\n", d.message.c_str());
-  }
-  std::optional<repair::RepairLog> repair_log;
-  double seconds_repair = 0.0;
+  if (!model) return model.error();
+  out.model = std::move(model).value();
+  LoadedModel& m = out.model;
   if (o.repair) {
     // The repaired mesh replaces the one read, in memory only; the model file is not touched.
     const auto repair_started = Clock::now();
-    auto repaired =
-        repair::repair_mesh(model->soup, repair::RepairOptions{.fill_holes = o.fill_holes});
-    if (!repaired) return report_error(repaired.error());
-    repaired->soup.format = model->soup.format;
-    model->soup = std::move(repaired->soup);
-    model->mesh = weld_vertices(model->soup);
-    repair_log = std::move(repaired->log);
-    seconds_repair = std::chrono::duration<double>(Clock::now() - repair_started).count();
-    std::fprintf(stderr, "strata: %s\n", repair::repair_log_summary(*repair_log).c_str());
+    auto repaired = repair::repair_mesh(m.soup, repair::RepairOptions{.fill_holes = o.fill_holes});
+    if (!repaired) return repaired.error();
+    repaired->soup.format = m.soup.format;
+    m.soup = std::move(repaired->soup);
+    m.mesh = weld_vertices(m.soup);
+    out.repair_log = std::move(repaired->log);
+    out.seconds_repair = std::chrono::duration<double>(Clock::now() - repair_started).count();
   }
-  auto grid = make_grid(model->mesh.bounds(), options->grid);
-  if (!grid) return report_error(grid.error());
+  auto grid = make_grid(m.mesh.bounds(), options->grid);
+  if (!grid) return grid.error();
+  if (cancelled()) return cancel_error;
 
-  const fs::path dir =
-      o.output_dir.empty() ? fs::path(model->stem + "-strata") : fs::path(o.output_dir);
-  const std::string& stem = model->stem;
+  out.dir = o.output_dir.empty() ? fs::path(m.stem + "-strata") : fs::path(o.output_dir);
+  const fs::path& dir = out.dir;
+  const std::string& stem = m.stem;
   std::error_code ec;
   const bool dir_existed = fs::exists(dir, ec);
   if (dir_existed && !fs::is_directory(dir, ec)) {
-    return report_error(
-        Error{ErrorCode::Usage, "the output path exists and is not a folder", dir.string()});
+    return Error{ErrorCode::Usage, "the output path exists and is not a folder", dir.string()};
   }
 
   std::vector<std::unique_ptr<LayerSink>> owned;
-  std::vector<std::string> written;
+  std::vector<std::string>& written = out.written;
+  if (control.cancel != nullptr) owned.push_back(std::make_unique<CancelSink>(*control.cancel));
   if (formats->count("cells")) {
     owned.push_back(io::make_cells_writer(dir / (stem + ".cells"), io::CellsEncoding::Binary));
     written.push_back(stem + ".cells");
@@ -172,8 +174,9 @@ int run_slice(const SliceCommandOptions& o) {
   diagnose_options.near_vertex_mm = 0.0;
   // The page draws the defects, so it asks for more of their locations than a report lists.
   if (view_collector != nullptr) diagnose_options.max_locations = o.page.max_defects;
-  const diagnose::MeshReport mesh_report =
-      diagnose::diagnose_mesh(model->mesh, model->soup, diagnose_options);
+  out.mesh_report = diagnose::diagnose_mesh(m.mesh, m.soup, diagnose_options);
+  const diagnose::MeshReport& mesh_report = out.mesh_report;
+  if (cancelled()) return cancel_error;
 
   Result<SliceSummary> summary = Error{ErrorCode::Internal, "not run", {}};
   if (o.kernel == "exact" && options->fill_rule == FillRule::Winding) {
@@ -183,44 +186,51 @@ int run_slice(const SliceCommandOptions& o) {
                     "exact): use --kernel fast, or nonzero or evenodd",
                     {}};
   } else {
-    ProgressLine progress("slicing " + model->path.filename().string());
-    const ProgressCallback on_progress = [&](std::uint32_t done, std::uint32_t total) {
-      progress.update(done, total);
-    };
     summary = o.kernel == "exact"
-                  ? slice_model_exact(model->mesh, *grid, *options, sinks, on_progress)
-                  : slice_model(model->mesh, *grid, *options, sinks, on_progress);
+                  ? slice_model_exact(m.mesh, *grid, *options, sinks, control.progress)
+                  : slice_model(m.mesh, *grid, *options, sinks, control.progress);
   }
   const auto remove_dir_if_we_made_it = [&] {
     if (!dir_existed && fs::is_empty(dir, ec)) fs::remove(dir, ec);
   };
+  // Every file written past this point is removed again if a later step fails or the run is
+  // cancelled, so that a failed run leaves no partial output.
+  std::vector<fs::path> committed;
+  const auto fail = [&](Error e) -> Result<SliceOutcome> {
+    for (const fs::path& p : committed) fs::remove(p, ec);
+    remove_dir_if_we_made_it();
+    return e;
+  };
   if (!summary) {
     remove_dir_if_we_made_it();
-    return report_error(summary.error());
+    return summary.error();
   }
   name_flags(summary->diagnostics);
+  out.summary = std::move(summary).value();
+  out.options = *options;
   const double seconds_total = std::chrono::duration<double>(Clock::now() - started).count();
-  auto report = slice_report_json(*model, mesh_report, *options, o.kernel, *summary, seconds_total);
-  if (repair_log) {
-    report["repair"] = nlohmann::json::parse(repair::repair_log_json(*repair_log));
-    report["repair"]["seconds"] = seconds_repair;
+  auto report = slice_report_json(m, mesh_report, *options, o.kernel, out.summary, seconds_total);
+  if (out.repair_log) {
+    report["repair"] = nlohmann::json::parse(repair::repair_log_json(*out.repair_log));
+    report["repair"]["seconds"] = out.seconds_repair;
   }
   if (formats->count("json")) {
     fs::create_directories(dir, ec);
     if (auto ok = io::write_text_file(dir / (stem + ".json"), report.dump(2) + "\n"); !ok) {
-      return report_error(ok.error());
+      return fail(ok.error());
     }
+    committed.push_back(dir / (stem + ".json"));
     written.push_back(stem + ".json");
   }
-  std::optional<fs::path> page_path;
   if (view_collector != nullptr) {
-    page_path = o.page.path.empty() ? dir / (stem + ".html") : fs::path(o.page.path);
+    if (cancelled()) return fail(cancel_error);
+    out.page_path = o.page.path.empty() ? dir / (stem + ".html") : fs::path(o.page.path);
     view::ViewPage page;
     page.title = stem;
     page.source_kind = "model";
-    page.source_path = model->path.string();
+    page.source_path = m.path.string();
     page.report_json = report.dump();
-    page.mesh = view::make_display_mesh(model->mesh, o.page.max_facets);
+    page.mesh = view::make_display_mesh(m.mesh, o.page.max_facets);
     if (page.mesh->simplified) {
       page.notes.push_back(fmt::format(
           "display mesh simplified from {} to {} facets for the browser; slicing used every facet",
@@ -230,31 +240,59 @@ int run_slice(const SliceCommandOptions& o) {
       page.notes.push_back(
           fmt::format("self-intersections not checked: `strata check {}` or "
                       "`strata view {}` checks them",
-                      model->path.filename().string(), model->path.filename().string()));
+                      m.path.filename().string(), m.path.filename().string()));
     }
     page.check = mesh_report;
-    page.model_mesh = &model->mesh;
+    page.model_mesh = &m.mesh;
     page.stack = view_collector->take();
     view::fit_to_budget(page.stack, static_cast<std::uint64_t>(o.page.budget_mb * 1e6));
-    if (page_path->has_parent_path()) fs::create_directories(page_path->parent_path(), ec);
-    if (auto ok = view::write_view_page(*page_path, page); !ok) {
-      remove_dir_if_we_made_it();
-      return report_error(ok.error());
+    if (out.page_path->has_parent_path()) fs::create_directories(out.page_path->parent_path(), ec);
+    if (auto ok = view::write_view_page(*out.page_path, page); !ok) return fail(ok.error());
+    committed.push_back(*out.page_path);
+    if (!o.page.data_path.empty()) {
+      auto data = view::view_page_data(page);
+      if (!data) return fail(data.error());
+      if (auto ok = io::write_text_file(o.page.data_path, *data); !ok) return fail(ok.error());
+      committed.push_back(o.page.data_path);
     }
     if (o.page.path.empty()) written.push_back(stem + ".html");
   }
-  for (const auto& d : summary->diagnostics) {
+  if (cancelled()) return fail(cancel_error);
+  out.seconds_total = std::chrono::duration<double>(Clock::now() - started).count();
+  return out;
+}
+
+int run_slice(const SliceCommandOptions& o) {
+  std::optional<ProgressLine> progress;
+  SliceRunControl control;
+  control.progress = [&](std::uint32_t done, std::uint32_t total) {
+    if (progress) progress->update(done, total);
+  };
+  progress.emplace("slicing " + fs::path(o.model).filename().string());
+  auto outcome = slice_to_folder(o, control);
+  progress.reset();
+  if (!outcome) return report_error(outcome.error());
+  const LoadedModel& m = outcome->model;
+  for (const auto& d : m.soup.diagnostics) {
+    std::fprintf(stderr, "strata: warning: %s\n", d.message.c_str());
+  }
+  if (outcome->repair_log) {
+    std::fprintf(stderr, "strata: %s\n", repair::repair_log_summary(*outcome->repair_log).c_str());
+  }
+  const SliceSummary& s = outcome->summary;
+  for (const auto& d : s.diagnostics) {
     std::fprintf(stderr, "strata: %s: %s\n", d.severity == Severity::Warning ? "warning" : "note",
                  d.message.c_str());
   }
   if (o.quiet) return kExitOk;
 
-  const SliceSummary& s = *summary;
+  const diagnose::MeshReport& mesh_report = outcome->mesh_report;
+  const SliceOptions& options = outcome->options;
   const GridSpec& g = s.grid;
   std::string out;
-  out += fmt::format("model   {} ({}, {} facets, {} vertices)\n", model->path.string(),
-                     model->soup.format, with_thousands(model->mesh.triangles.size()),
-                     with_thousands(model->mesh.vertices.size()));
+  out +=
+      fmt::format("model   {} ({}, {} facets, {} vertices)\n", m.path.string(), m.soup.format,
+                  with_thousands(m.mesh.triangles.size()), with_thousands(m.mesh.vertices.size()));
   out += fmt::format(
       "mesh    {} (open edges {}, non-manifold edges {}, degenerate facets {}, duplicate facets "
       "{})\n",
@@ -264,8 +302,8 @@ int run_slice(const SliceCommandOptions& o) {
   out += fmt::format("grid    {} x {} x {} cells of {} x {} x {} mm, origin ({}, {}, {})\n", g.nx,
                      g.ny, g.nz, g.dx, g.dy, g.dz, g.x0, g.y0, g.z0);
   out += fmt::format("rule    fill {}, shell {} mm ({}), scan offset {} mm\n",
-                     to_string(options->fill_rule), options->shell_mm,
-                     to_string(options->shell_mode), options->scan_offset_mm);
+                     to_string(options.fill_rule), options.shell_mm, to_string(options.shell_mode),
+                     options.scan_offset_mm);
   out +=
       fmt::format("cells   {} empty, {} interior, {} boundary\n", with_thousands(s.class_counts[0]),
                   with_thousands(s.class_counts[1]), with_thousands(s.class_counts[2]));
@@ -280,15 +318,16 @@ int run_slice(const SliceCommandOptions& o) {
                      std::count_if(s.layers.begin(), s.layers.end(),
                                    [](const LayerStats& l) { return l.open_chains > 0; }),
                      s.open_chains ? " (see the report: nothing was closed by a guess)" : "");
-  if (!written.empty()) {
-    out += fmt::format("output  {}/: {}\n", dir.string(), fmt::join(written, ", "));
+  if (!outcome->written.empty()) {
+    out +=
+        fmt::format("output  {}/: {}\n", outcome->dir.string(), fmt::join(outcome->written, ", "));
   }
-  if (page_path) {
-    out += fmt::format("page    {} (open {} in a browser; it works offline)\n", page_path->string(),
-                       file_url(*page_path));
+  if (outcome->page_path) {
+    out += fmt::format("page    {} (open {} in a browser; it works offline)\n",
+                       outcome->page_path->string(), file_url(*outcome->page_path));
   }
-  out += fmt::format("time    read {:.3f} s, slice {:.3f} s, total {:.3f} s\n", model->seconds_read,
-                     s.seconds, seconds_total);
+  out += fmt::format("time    read {:.3f} s, slice {:.3f} s, total {:.3f} s\n", m.seconds_read,
+                     s.seconds, outcome->seconds_total);
   std::fputs(out.c_str(), stdout);
   return kExitOk;
 }

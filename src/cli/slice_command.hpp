@@ -1,10 +1,19 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <atomic>
 #include <cstddef>
+#include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "cli/load_model.hpp"
 #include "cli/slice_cli_options.hpp"
+#include "strata/core/result.hpp"
+#include "strata/diagnose/mesh_report.hpp"
+#include "strata/pipeline/run_slice.hpp"
+#include "strata/repair/repair_log.hpp"
 
 namespace strata::cli {
 
@@ -18,6 +27,7 @@ struct PageOptions {
   std::size_t max_defects = 10'000;  ///< locations of each kind of defect drawn
   bool hatches = true;               ///< --no-hatches clears it
   bool full_check = false;           ///< also look for self-intersections (as `strata check`)
+  std::filesystem::path data_path;   ///< also write the page's data (web/DATA.md) there
 };
 
 struct SliceCommandOptions {
@@ -31,6 +41,31 @@ struct SliceCommandOptions {
   bool repair = false;      ///< --repair: slice the repaired mesh (in memory)
   bool fill_holes = false;  ///< --fill-holes, with --repair
 };
+
+/// How a slice run reports progress and learns that it must stop.
+struct SliceRunControl {
+  ProgressCallback progress;
+  const std::atomic<bool>* cancel = nullptr;  ///< raised: stop, leaving no output (may be null)
+};
+
+/// What a slice run did, for the summary the CLI prints or the server shows.
+struct SliceOutcome {
+  LoadedModel model;  ///< as sliced (repaired when asked)
+  diagnose::MeshReport mesh_report;
+  SliceOptions options;
+  SliceSummary summary;
+  std::optional<repair::RepairLog> repair_log;
+  double seconds_repair = 0.0;
+  std::filesystem::path dir;
+  std::vector<std::string> written;  ///< the outputs, as listed to the user
+  std::optional<std::filesystem::path> page_path;
+  double seconds_total = 0.0;
+};
+
+/// Reads, (repairs,) checks and slices the model and writes the chosen outputs; prints nothing.
+/// A failed or cancelled run (Error with kCancelledMessage) leaves no output behind.
+Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& options,
+                                     const SliceRunControl& control = {});
 
 /// `strata slice`; `strata view MODEL` runs it with the html format alone. Returns the exit code.
 int run_slice(const SliceCommandOptions& options);

@@ -219,6 +219,18 @@ Result<std::string> view_page_data(const ViewPage& page) {
   return escaped;
 }
 
+std::string view_page_with_data(std::string_view data) {
+  const std::string_view page_template = detail::view_page_template();
+  const std::size_t at = page_template.find(detail::kViewDataMarker);
+  STRATA_ASSERT(at != std::string_view::npos, "the view template holds the data marker");
+  std::string page;
+  page.reserve(page_template.size() + data.size());
+  page.append(page_template.substr(0, at));
+  page.append(data);
+  page.append(page_template.substr(at + detail::kViewDataMarker.size()));
+  return page;
+}
+
 Result<void> write_view_page(const std::filesystem::path& path, const ViewPage& page) {
   auto data = view_page_data(page);
   if (!data) return data.error();

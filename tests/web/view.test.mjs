@@ -16,7 +16,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
-import { chromium } from 'playwright-core';
+import { acquireBrowser, releaseBrowser } from './browser.mjs';
 import { buildTemplate, insertData } from '../../web/build.mjs';
 import { CANVAS_BACKGROUND, CELL_RGB } from '../../web/src/palette.js';
 import { classify, fixtureJson, WORDS } from './make_fixture.mjs';
@@ -30,7 +30,6 @@ const models = (process.env.STRATA_VIEW_MODELS || path.join(repo, 'data', 'ring.
   .filter(Boolean)
   .map((s) => path.resolve(repo, s));
 const sliceArgs = (process.env.STRATA_VIEW_ARGS || '--cell 0.5 --layer 0.5').split(/\s+/).filter(Boolean);
-const chromiumPath = process.env.STRATA_CHROMIUM || '/usr/bin/chromium';
 
 const VIEWPORT = { width: 1400, height: 950 };
 const BACKGROUND = hexRgb(CANVAS_BACKGROUND);
@@ -121,14 +120,11 @@ before(async () => {
     pages.push(realPage(box, { boxColumn: true }));
     for (const model of models) pages.push(realPage(model));
   }
-  browser = await chromium.launch({
-    executablePath: chromiumPath,
-    args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run', '--disable-quic'],
-  });
+  browser = await acquireBrowser();
 });
 
 after(async () => {
-  await browser?.close();
+  await releaseBrowser();
 });
 
 /** Opens a page with the network blocked (file:// only) and its errors recorded. */

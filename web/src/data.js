@@ -12,6 +12,43 @@ export const CLASS_WORDS = ['empty', 'interior', 'reserved', 'boundary'];
 export class DataError extends Error {}
 
 /** The embedded JSON text, parsed and checked. Throws DataError with a readable message. */
+/**
+ * The page's data: embedded, or, when the embedded JSON is {"format": "strata-view-remote",
+ * "url": ...} (the viewer that strata serve hands out), fetched from that same-origin URL.
+ */
+export async function loadPageData(doc = document) {
+  const element = doc.getElementById('strata-data');
+  const text = element?.textContent.trim() ?? '';
+  if (text.startsWith('{"format":"strata-view-remote"')) {
+    let remote;
+    try {
+      remote = JSON.parse(text);
+    } catch (e) {
+      throw new DataError(`The page's data link is not valid JSON (${e.message}).`);
+    }
+    if (typeof remote.url !== 'string' || !remote.url.startsWith('/')) throw new DataError('The page\'s data link names no URL on this server.');
+    let response;
+    try {
+      response = await fetch(remote.url, { cache: 'no-store' });
+    } catch (e) {
+      throw new DataError(`The server did not answer (${e.message}).`);
+    }
+    if (!response.ok) {
+      const reason = await response.json().then((j) => j.error, () => response.statusText);
+      throw new DataError(`The server has no data for this page: ${reason}.`);
+    }
+    let data;
+    try {
+      data = await response.json();
+    } catch (e) {
+      throw new DataError(`The server's data is not valid JSON (${e.message}).`);
+    }
+    checkData(data);
+    return data;
+  }
+  return readEmbeddedData(doc);
+}
+
 export function readEmbeddedData(doc = document) {
   const element = doc.getElementById('strata-data');
   if (!element) throw new DataError('This page holds no model data (no element #strata-data).');

@@ -4,7 +4,7 @@
 
 import 'uplot/dist/uPlot.min.css';
 import './style.css';
-import { DataError, readEmbeddedData, StrataData } from './data.js';
+import { DataError, loadPageData, StrataData } from './data.js';
 import { fillHeader } from './header.js';
 import { LayerControls } from './layer_controls.js';
 import { LayerView } from './layer_view.js';
@@ -36,8 +36,7 @@ function webglAvailable() {
   }
 }
 
-function start() {
-  const raw = readEmbeddedData();
+function start(raw) {
   const data = new StrataData(raw);
   const state = new ViewState(data);
   fillHeader({ title: $('model-title'), meta: $('model-meta'), verdict: $('verdict'), notes: $('notes') }, data);
@@ -112,21 +111,29 @@ function start() {
 
 let app = null;
 let failure = null;
-try {
-  app = start();
-} catch (e) {
+
+function fail(e) {
   failure = e instanceof DataError ? e.message : `An unexpected error stopped the page: ${e?.message ?? e}`;
   if (!(e instanceof DataError)) console.error(e);
   showError(failure);
+  return { ok: false, error: failure };
 }
 
-const ready = app
-  ? app.ready.catch((e) => {
+const ready = loadPageData().then(
+  (raw) => {
+    try {
+      app = start(raw);
+    } catch (e) {
+      return fail(e);
+    }
+    return app.ready.catch((e) => {
       failure = e?.message ?? String(e);
       showError(failure);
       return { ok: false, error: failure };
-    })
-  : Promise.resolve({ ok: false, error: failure });
+    });
+  },
+  (e) => fail(e),
+);
 
 window.strataView = Object.freeze({
   ready,

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "strata/core/result.hpp"
@@ -32,6 +33,10 @@ struct ViewPage {
 /// The page's data: one JSON object, with "</" escaped so that it can sit in a script element.
 /// @return Error{BadInput} when report_json or validation_json is not JSON.
 Result<std::string> view_page_data(const ViewPage& page);
+
+/// The viewer with `data` (the page's data, or JSON the page understands) in place of its data
+/// marker: a self-contained HTML page.
+std::string view_page_with_data(std::string_view data);
 
 /// Writes the self-contained page (the viewer with the data inlined) to `path` atomically.
 /// @return Error{BadInput} naming the path when it cannot be written.
