@@ -108,6 +108,7 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   if (!model) return model.error();
   out.model = std::move(model).value();
   LoadedModel& m = out.model;
+  if (control.read_warnings) control.read_warnings(m.soup.diagnostics);
   if (o.repair) {
     // The repaired mesh replaces the one read, in memory only; the model file is not touched.
     const auto repair_started = Clock::now();
@@ -268,14 +269,16 @@ int run_slice(const SliceCommandOptions& o) {
   control.progress = [&](std::uint32_t done, std::uint32_t total) {
     if (progress) progress->update(done, total);
   };
+  control.read_warnings = [&](const Diagnostics& diagnostics) {
+    for (const auto& d : diagnostics) {
+      std::fprintf(stderr, "strata: warning: %s\n", d.message.c_str());
+    }
+  };
   progress.emplace("slicing " + fs::path(o.model).filename().string());
   auto outcome = slice_to_folder(o, control);
   progress.reset();
   if (!outcome) return report_error(outcome.error());
   const LoadedModel& m = outcome->model;
-  for (const auto& d : m.soup.diagnostics) {
-    std::fprintf(stderr, "strata: warning: %s\n", d.message.c_str());
-  }
   if (outcome->repair_log) {
     std::fprintf(stderr, "strata: %s\n", repair::repair_log_summary(*outcome->repair_log).c_str());
   }

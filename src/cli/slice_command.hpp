@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,6 +47,9 @@ struct SliceCommandOptions {
 struct SliceRunControl {
   ProgressCallback progress;
   const std::atomic<bool>* cancel = nullptr;  ///< raised: stop, leaving no output (may be null)
+  /// Told the reader's warnings as soon as the model is read, so that they are seen even when a
+  /// later step fails (may be empty).
+  std::function<void(const Diagnostics&)> read_warnings;
 };
 
 /// What a slice run did, for the summary the CLI prints or the server shows.

@@ -154,8 +154,11 @@ describe('strata serve', { skip: cli ? false : 'STRATA_CLI is not set' }, () => 
     // A second parameter set on the same model, compared side by side.
     await setOptions(page, { shell: 0.5 });
     await page.click('[data-testid="slice"]');
-    await page.waitForSelector('[data-testid="slice-done"]', { timeout: 120_000 });
+    // The first job's "done" is still on the page until the new job is selected: wait for that.
+    await page.waitForFunction((first) => window.strataServe.selected() !== first, id, { timeout: 60_000 });
     const second = await page.evaluate(() => window.strataServe.selected());
+    await page.waitForFunction(() => window.strataServe.job()?.slice?.state === 'done', null, { timeout: 120_000 });
+    await page.waitForSelector('[data-testid="slice-done"]', { timeout: 10_000 });
     assert.notEqual(second, id, 'a new parameter set is a new job');
     await page.check(`[data-testid="job-${id}"] input[type="checkbox"]`);
     await viewerFrame(page, second);
@@ -213,7 +216,9 @@ describe('strata serve', { skip: cli ? false : 'STRATA_CLI is not set' }, () => 
     const { context, page } = await openApp();
     await upload(page, ring);
     await page.waitForSelector('[data-testid="verdict"]');
-    await setOptions(page, { layer: 0.01, cell: 0.01, shell: 0.5 });
+    // Many cheap layers (5000 of 800 x 800 cells): the first ones come quickly even under the
+    // sanitizers, the whole job takes minutes.
+    await setOptions(page, { layer: 0.002, cell: 0.05, shell: 0.05 });
     await page.click('[data-testid="slice"]');
     const id = await page.evaluate(() => window.strataServe.selected());
     await page.waitForFunction(() => (window.strataServe.job()?.slice.done ?? 0) > 0, null, { timeout: 120_000 });
