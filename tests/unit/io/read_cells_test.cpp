@@ -512,6 +512,19 @@ TEST(CellsReader, BinaryNonFiniteOriginIsRejected) {
   EXPECT_EQ(e.message, "origin -1.5 inf 0.125 is not finite");
 }
 
+TEST(CellsReader, BinaryGridTooLargeToAddressIsRejectedBeforeItsLength) {
+  // 4294967295 x 4294967295 cells a layer take 2^62 bytes: five layers overflow a 64-bit size.
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Binary);
+  std::string file = read_file_bytes(path).substr(0, 80);
+  for (int b = 12; b < 20; ++b) file[b] = static_cast<char>(0xFF);  // nx, ny = 2^32 - 1
+  file[20] = 5;                                                     // nz = 5
+  write_file_bytes(path, file);
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string());
+  EXPECT_EQ(e.message, "grid 4294967295 x 4294967295 x 5 is too large to address");
+}
+
 TEST(CellsReader, FolderIsNotACellsFile) {
   ScratchDir dir;
   const Error e = read_error(dir.path());
