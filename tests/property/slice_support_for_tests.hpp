@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,9 @@ inline std::string kernel_name(Kernel kernel) {
   }
   return "Unknown";
 }
+
+/// Lets GoogleTest print a Kernel parameter by its name.
+inline void PrintTo(Kernel kernel, std::ostream* os) { *os << kernel_name(kernel); }
 
 /// GoogleTest parameter names "Fast", "Exact", "Winding".
 struct KernelTestName {
