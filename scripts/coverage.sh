@@ -19,7 +19,12 @@ fi
 
 rm -rf "$build/profiles"
 mkdir -p "$build/profiles"
-ctest --preset coverage --progress
+# One line a test would bury the table: the log stays in build/coverage/ctest.log.
+if ! ctest --preset coverage > "$build/ctest.log"; then
+  tail -n 40 "$build/ctest.log"
+  exit 1
+fi
+grep -E "tests passed|Total Test time" "$build/ctest.log"
 llvm-profdata-14 merge -sparse "$build"/profiles/*.profraw -o "$build/coverage.profdata"
 rm -rf "$build/profiles"
 # lcov records rather than the JSON summary: a header reached through two spellings of its path
