@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs strata's build dependencies from Debian 12's packages when they are missing, and the
 # view page's packages from package-lock.json (npm ci) when node_modules/ does not match it.
-# Usage: scripts/setup.sh [test]
+# Usage: scripts/setup.sh [test | coverage]
 #   test: also clang with its sanitizer and libFuzzer runtimes (the `asan` preset the test
 #         command builds) and Debian's chromium (the browser tests of the view page)
+#   coverage: the same, and llvm-profdata-14 and llvm-cov-14 (scripts/coverage.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -14,9 +15,13 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 case "${1:-}" in
-  test | sanitizers)
+  test | sanitizers | coverage)
     # Debian 12: clang 14; the ASan, UBSan and libFuzzer runtimes are in libclang-rt-14-dev.
     packages+=(clang libclang-rt-14-dev chromium)
+    ;;&
+  coverage)
+    # The profile runtime is in libclang-rt-14-dev too; the tools that read profiles in llvm-14.
+    packages+=(llvm-14 python3)
     ;;
 esac
 # Node.js bundles the view page at build time; a machine that has a node already keeps it.

@@ -11,7 +11,13 @@ namespace strata {
 namespace {
 
 using testing::cells_of;
+using testing::Kernel;
+using testing::KernelTestName;
 using testing::slice_in_memory;
+
+/// The tests every kernel runs in milliseconds; the fine grids below stay on the fast kernel
+/// (tests/property/metamorphic_test.cpp checks the kernels agree).
+class AnalyticSolidsKernel : public ::testing::TestWithParam<Kernel> {};
 
 double exact_volume(const TriangleSoup& soup) {
   diagnose::DiagnoseOptions o;
@@ -30,20 +36,21 @@ double relative_volume_error(const TriangleSoup& soup, double cell, double shift
   return (cells - exact_volume(soup)) / exact_volume(soup);
 }
 
-TEST(AnalyticSolids, BoxOnAnAlignedGridHasExactCountsInBothShellModes) {
+TEST_P(AnalyticSolidsKernel, BoxOnAnAlignedGridHasExactCountsInBothShellModes) {
+  const Kernel kernel = GetParam();
   const TriangleSoup box = mesh::make_box({0, 0, 0}, {3.0, 2.5, 2.0});
   // 0.25 mm cells: 12 x 10 x 8 solid cells.
-  auto layers = slice_in_memory(box, cells_of(0.25, ShellMode::Layers, 0.5));  // 2 rings
+  auto layers = slice_in_memory(box, cells_of(0.25, ShellMode::Layers, 0.5), kernel);  // 2 rings
   EXPECT_EQ(layers.summary.class_counts[0], 0u);
   EXPECT_EQ(layers.summary.class_counts[1], 8u * 6 * 4);
   EXPECT_EQ(layers.summary.class_counts[2], 12u * 10 * 8 - 8 * 6 * 4);
   // Distance 0.5: centres at 0.125, 0.375 from a face are closer, 0.625 is not.
-  auto distance = slice_in_memory(box, cells_of(0.25, ShellMode::Distance, 0.5));
+  auto distance = slice_in_memory(box, cells_of(0.25, ShellMode::Distance, 0.5), kernel);
   EXPECT_EQ(distance.summary.class_counts[1], 8u * 6 * 4);
   // Distance 0.625 exactly: the third ring's centres lie at exactly t and stay interior.
-  auto tie = slice_in_memory(box, cells_of(0.25, ShellMode::Distance, 0.625));
+  auto tie = slice_in_memory(box, cells_of(0.25, ShellMode::Distance, 0.625), kernel);
   EXPECT_EQ(tie.summary.class_counts[1], 8u * 6 * 4);
-  auto past = slice_in_memory(box, cells_of(0.25, ShellMode::Distance, 0.626));
+  auto past = slice_in_memory(box, cells_of(0.25, ShellMode::Distance, 0.626), kernel);
   EXPECT_EQ(past.summary.class_counts[1], 6u * 4 * 2);
 }
 
@@ -108,11 +115,12 @@ TEST(AnalyticSolids, SphereShellHasTheAskedThickness) {
   EXPECT_GT(interior, 100000u);
 }
 
-TEST(AnalyticSolids, ContourAreaMatchesTheRingSection) {
+TEST_P(AnalyticSolidsKernel, ContourAreaMatchesTheRingSection) {
   const double outer = 20.0, inner = 12.0;
   const int n = 128;
   const TriangleSoup ring = mesh::make_ring(outer, inner, 10.0, n);
-  const auto sliced = slice_in_memory(ring, cells_of(0.5));
+  const auto sliced = slice_in_memory(ring, cells_of(0.5), GetParam());
+  ASSERT_EQ(sliced.summary.layers.size(), 20u);
   // Every layer's contours are the two 128-gons: area (n/2) sin(2 pi / n) (R^2 - r^2).
   const double polygon_area = 0.5 * n * std::sin(2 * M_PI / n) * (outer * outer - inner * inner);
   for (const auto& layer : sliced.summary.layers) {
@@ -121,6 +129,10 @@ TEST(AnalyticSolids, ContourAreaMatchesTheRingSection) {
     EXPECT_EQ(layer.holes, 1u);
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Kernels, AnalyticSolidsKernel,
+                         ::testing::Values(Kernel::Fast, Kernel::Exact, Kernel::Winding),
+                         KernelTestName{});
 
 }  // namespace
 }  // namespace strata

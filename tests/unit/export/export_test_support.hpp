@@ -3,10 +3,8 @@
 // Helpers of the export tests: a scratch folder, layers built by hand, running a sink over them.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -17,38 +15,12 @@
 #include <vector>
 
 #include "strata/pipeline/layer_sink.hpp"
+#include "support/temp_dir.hpp"
 
 namespace strata::io::testing {
 
 /// A fresh folder under the system's temporary folder, removed with everything in it.
-class ScratchDir {
- public:
-  ScratchDir() {
-    static std::atomic<int> counter{0};
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = "strata-export-";
-    if (info != nullptr) name += std::string(info->test_suite_name()) + "-" + info->name() + "-";
-    name += std::to_string(::getpid()) + "-" + std::to_string(counter++);
-    for (char& c : name) {
-      if (c == '/') c = '_';
-    }
-    path_ = std::filesystem::temp_directory_path() / name;
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
-};
+using ScratchDir = ::strata::test::TempDir;
 
 /// One layer's data, owned (LayerResult only refers to it).
 struct LayerData {

@@ -138,6 +138,16 @@ TEST(SvgWriter, TitleNamesTheLayerAndZ) {
   EXPECT_NE(svg.find(">part layer 1 z=1.625 mm</text>"), std::string::npos);
 }
 
+TEST(SvgWriter, TitleEscapesTheMarkupCharactersOfTheStem) {
+  ScratchDir dir;
+  auto sink = make_svg_writer(dir.path(), "a&b<c>\"d'e");
+  ASSERT_TRUE(run_sink(*sink, small_run(), layers_with_contours()));
+  const std::string svg = read_file_bytes(dir / "svg/a&b<c>\"d'e_00000.svg");
+  EXPECT_NE(svg.find("<title>a&amp;b&lt;c&gt;&quot;d&apos;e layer 0 z=0.625 mm</title>"),
+            std::string::npos)
+      << svg;
+}
+
 TEST(SvgWriter, AbortRemovesEarlierLayersAndTheFoldersItCreated) {
   ScratchDir dir;
   auto sink = make_svg_writer(dir / "out", "part");

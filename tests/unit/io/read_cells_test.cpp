@@ -413,6 +413,136 @@ TEST(CellsReader, AsciiExtraContentAfterTheLastLayerIsRejected) {
   EXPECT_EQ(e.location, path.string() + ":15");
 }
 
+TEST(CellsReader, AsciiFileWithAnotherFirstLineIsRejected) {
+  // It starts like an ASCII cells file, so the ASCII reader says what the first line must be.
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 1, "strata-cells-1");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":1");
+  EXPECT_EQ(e.message, "expected the first line 'strata-cells 1'");
+}
+
+TEST(CellsReader, AsciiUnsupportedVersionNamesBothVersionLines) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 1, "strata-cells 2");
+  EXPECT_EQ(read_error(path).message,
+            "unsupported version line 'strata-cells 2'; expected 'strata-cells 1'");
+}
+
+TEST(CellsReader, AsciiHeaderKeyGivenTwiceIsRejected) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 5, "grid 5 3 2");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":5");
+  EXPECT_EQ(e.message, "'grid' appears twice in the header");
+}
+
+TEST(CellsReader, AsciiHeaderLineWithTooFewValuesShowsItsShape) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 4, "spacing 0.5 0.25");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":4");
+  EXPECT_EQ(e.message, "expected 'spacing dx dy dz'");
+}
+
+TEST(CellsReader, AsciiMissingHeaderKeyIsNamedAtTheFirstLayer) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 5, "");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":6");
+  EXPECT_EQ(e.message, "the header has no 'shell' line before the first layer");
+}
+
+/// The first `count` lines of the ASCII file of small_run().
+std::filesystem::path ascii_first_lines(const ScratchDir& dir, std::size_t count) {
+  const auto path = write_small(dir, CellsEncoding::Ascii);
+  const auto lines = testing::lines_of(read_file_bytes(path));
+  std::string text;
+  for (std::size_t n = 0; n < count; ++n) text += lines.at(n) + "\n";
+  write_file_bytes(path, text);
+  return path;
+}
+
+TEST(CellsReader, AsciiHeaderWithoutLayersSaysHowManyWereExpected) {
+  ScratchDir dir;
+  const auto path = ascii_first_lines(dir, 5);
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":6");
+  EXPECT_EQ(e.message, "file ends after the header; expected 2 layers");
+}
+
+TEST(CellsReader, AsciiFileEndingBetweenLayersSaysHowManyWereRead) {
+  ScratchDir dir;
+  const auto path = ascii_first_lines(dir, 9);
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":10");
+  EXPECT_EQ(e.message, "file ends after 1 of 2 layers");
+}
+
+TEST(CellsReader, AsciiHeaderValuesAreCheckedAsInBinaryFiles) {
+  struct Case {
+    std::size_t line;
+    const char* replacement;
+    const char* message;
+  };
+  const Case cases[] = {
+      {2, "grid 5 0 2", "grid 5 x 0 x 2 has no cells; every size must be at least 1"},
+      {4, "spacing 0.5 -0.25 1", "spacing 0.5 -0.25 1 must be positive and finite"},
+      {4, "spacing 0.5 0.25 0", "spacing 0.5 0.25 0 must be positive and finite"},
+      {5, "shell -0.75", "shell thickness -0.75 must be finite and not negative"},
+  };
+  for (const Case& c : cases) {
+    ScratchDir dir;
+    const auto path = ascii_with_line(dir, c.line, c.replacement);
+    const Error e = read_error(path);
+    EXPECT_EQ(e.location, path.string() + ": header") << c.replacement;
+    EXPECT_EQ(e.message, c.message);
+  }
+}
+
+TEST(CellsReader, BinaryNonFiniteOriginIsRejected) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Binary);
+  std::string file = read_file_bytes(path);
+  const unsigned char inf_le[8] = {0, 0, 0, 0, 0, 0, 0xF0, 0x7F};
+  for (int b = 0; b < 8; ++b) file[32 + b] = static_cast<char>(inf_le[b]);  // y0 = +inf
+  write_file_bytes(path, file);
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string());
+  EXPECT_EQ(e.message, "origin -1.5 inf 0.125 is not finite");
+}
+
+TEST(CellsReader, BinaryGridTooLargeToAddressIsRejectedBeforeItsLength) {
+  // 4294967295 x 4294967295 cells a layer take 2^62 bytes: five layers overflow a 64-bit size.
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Binary);
+  std::string file = read_file_bytes(path).substr(0, 80);
+  for (int b = 12; b < 20; ++b) file[b] = static_cast<char>(0xFF);  // nx, ny = 2^32 - 1
+  file[20] = 5;                                                     // nz = 5
+  write_file_bytes(path, file);
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string());
+  EXPECT_EQ(e.message, "grid 4294967295 x 4294967295 x 5 is too large to address");
+}
+
+TEST(CellsReader, FolderIsNotACellsFile) {
+  ScratchDir dir;
+  const Error e = read_error(dir.path());
+  EXPECT_EQ(e.location, dir.path().string());
+  EXPECT_EQ(e.message, "is a folder, not a cells file");
+}
+
+TEST(CellsReader, FileShorterThanAnyCellsFileIsRejected) {
+  ScratchDir dir;
+  for (const std::string bytes : {std::string(), std::string("ST")}) {
+    write_file_bytes(dir / "tiny.cells", bytes);
+    const Error e = read_error(dir / "tiny.cells");
+    EXPECT_EQ(e.location, (dir / "tiny.cells").string());
+    EXPECT_EQ(e.message,
+              "file of " + std::to_string(bytes.size()) + " bytes is too short to be a cells file");
+  }
+}
+
 TEST(CellsReader, AsciiAcceptsCrLfLineEnds) {
   ScratchDir dir;
   const auto path = write_small(dir, CellsEncoding::Ascii);

@@ -1,0 +1,127 @@
+// The contract every file sink keeps (src/export/sink_support.cpp): the order of begin, layers
+// and finish, refused with Error{Internal} when broken; the output folder; and the clean-up of
+// the layer files an earlier, longer run left.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "export_test_support.hpp"
+#include "strata/export/cells_writer.hpp"
+#include "strata/export/svg_writer.hpp"
+
+namespace strata::io {
+namespace {
+
+using testing::read_file_bytes;
+using testing::ScratchDir;
+using testing::small_layers;
+using testing::small_run;
+using testing::write_file_bytes;
+
+void expect_internal(const Result<void>& r, const std::string& message) {
+  ASSERT_FALSE(r.has_value()) << "expected: " << message;
+  EXPECT_EQ(r.error().code, ErrorCode::Internal);
+  EXPECT_EQ(r.error().message, message);
+}
+
+TEST(SinkContract, BeginTwiceIsAnInternalError) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells");
+  ASSERT_TRUE(sink->begin(small_run()));
+  expect_internal(sink->begin(small_run()), "cells writer: begin() called twice");
+  sink->abort();
+  EXPECT_FALSE(std::filesystem::exists(dir / "part.cells"));
+}
+
+TEST(SinkContract, LayerBeforeBeginIsAnInternalError) {
+  ScratchDir dir;
+  auto sink = make_svg_writer(dir.path(), "part");
+  expect_internal(sink->add_layer(small_layers()[0].result()),
+                  "SVG writer: add_layer() outside begin() .. finish()");
+}
+
+TEST(SinkContract, LayerOutOfOrderIsAnInternalError) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells");
+  ASSERT_TRUE(sink->begin(small_run()));
+  expect_internal(sink->add_layer(small_layers()[1].result()),
+                  "cells writer: layer 1 arrived, expected layer 0");
+}
+
+TEST(SinkContract, LayerBeyondTheGridIsAnInternalError) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells");
+  ASSERT_TRUE(sink->begin(small_run()));
+  auto layers = small_layers();
+  for (const auto& layer : layers) ASSERT_TRUE(sink->add_layer(layer.result()));
+  layers[0].layer = 2;
+  expect_internal(sink->add_layer(layers[0].result()),
+                  "cells writer: layer 2 is beyond the grid's 2 layers");
+}
+
+TEST(SinkContract, LayerWithTheWrongCellCountIsAnInternalError) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells");
+  ASSERT_TRUE(sink->begin(small_run()));
+  auto layer = small_layers()[0];
+  layer.cells.resize(3);
+  expect_internal(sink->add_layer(layer.result()),
+                  "cells writer: layer 0 has 3 cells, the grid 5 x 3 needs 15");
+}
+
+TEST(SinkContract, FinishBeforeEveryLayerOrWithoutBeginIsAnInternalError) {
+  ScratchDir dir;
+  auto early = make_cells_writer(dir / "part.cells");
+  ASSERT_TRUE(early->begin(small_run()));
+  ASSERT_TRUE(early->add_layer(small_layers()[0].result()));
+  expect_internal(early->finish(), "cells writer: finish() after 1 of 2 layers");
+  early->abort();
+  EXPECT_FALSE(std::filesystem::exists(dir / "part.cells"));
+
+  auto unstarted = make_svg_writer(dir.path(), "part");
+  expect_internal(unstarted->finish(), "SVG writer: finish() without begin()");
+}
+
+TEST(SinkContract, CreatesMissingOutputFoldersAndRemovesThemOnAbort) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "a" / "b" / "part.cells");
+  ASSERT_TRUE(sink->begin(small_run()));
+  EXPECT_TRUE(std::filesystem::is_directory(dir / "a" / "b"));
+  sink->abort();
+  EXPECT_FALSE(std::filesystem::exists(dir / "a"));
+  EXPECT_TRUE(std::filesystem::is_directory(dir.path()));
+}
+
+TEST(SinkContract, FileWhereAnOutputFolderShouldBeIsBadInput) {
+  ScratchDir dir;
+  write_file_bytes(dir / "a", "not a folder");
+  auto sink = make_cells_writer(dir / "a" / "b" / "part.cells");
+  const Result<void> r = sink->begin(small_run());
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().code, ErrorCode::BadInput);
+  EXPECT_EQ(r.error().location, (dir / "a").string());
+  EXPECT_EQ(r.error().message, "cannot create the output folder: a file of that name exists");
+  EXPECT_EQ(read_file_bytes(dir / "a"), "not a folder");
+}
+
+TEST(SinkContract, FinishRemovesOnlyTheStemsNumberedLayerFilesBeyondTheGrid) {
+  ScratchDir dir;
+  std::filesystem::create_directories(dir / "svg");
+  const std::vector<std::string> kept = {"part_notes.svg", "part_00001.png", "other_00009.svg",
+                                         "part_1.svg", "part_0000x.svg"};
+  const std::vector<std::string> stale = {"part_00002.svg", "part_00009.svg",
+                                          "part_99999999999999999999999.svg"};
+  for (const auto& name : kept) write_file_bytes(dir / "svg" / name, "x");
+  for (const auto& name : stale) write_file_bytes(dir / "svg" / name, "x");
+  auto sink = make_svg_writer(dir.path(), "part");
+  ASSERT_TRUE(testing::run_sink(*sink, small_run(), small_layers()));
+  for (const auto& name : kept) EXPECT_TRUE(std::filesystem::exists(dir / "svg" / name)) << name;
+  for (const auto& name : stale) EXPECT_FALSE(std::filesystem::exists(dir / "svg" / name)) << name;
+  EXPECT_TRUE(std::filesystem::exists(dir / "svg" / "part_00000.svg"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "svg" / "part_00001.svg"));
+}
+
+}  // namespace
+}  // namespace strata::io

@@ -1,0 +1,198 @@
+// The layers a facet crosses (SPEC §2: zmin < zk <= zmax), the facets grouped by first layer, and
+// the segment a plane cuts from a facet, with the vertex-on-plane rule's ties.
+#include "strata/slice/slice_float.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace strata {
+namespace {
+
+/// Planes at z = 0.5, 1.5, 2.5, 3.5.
+GridSpec four_layers() {
+  GridSpec g;
+  g.x0 = g.y0 = g.z0 = 0.0;
+  g.dx = g.dy = g.dz = 1.0;
+  g.nx = g.ny = 4;
+  g.nz = 4;
+  return g;
+}
+
+/// One facet per (z_a, z_b, z_c), over the unit right triangle in x and y.
+IndexedMesh facets_at_heights(const std::vector<std::array<double, 3>>& heights) {
+  IndexedMesh m;
+  for (const auto& z : heights) {
+    const auto base = static_cast<VertexIndex>(m.vertices.size());
+    m.vertices.push_back({0, 0, z[0]});
+    m.vertices.push_back({1, 0, z[1]});
+    m.vertices.push_back({0, 1, z[2]});
+    m.triangles.push_back({base, base + 1, base + 2});
+  }
+  return m;
+}
+
+bool crosses_none(const FacetLayerRanges& r, std::size_t f) { return r.first[f] > r.last[f]; }
+
+TEST(FacetLayerRanges, CrossesThePlanesStrictlyAboveItsLowestCornerUpToItsHighest) {
+  const IndexedMesh m = facets_at_heights({
+      {0.0, 1.0, 0.2},   // 0: plane 0.5 only
+      {0.2, 1.5, 1.0},   // 1: top corner on plane 1.5 counts: planes 0.5 and 1.5
+      {1.5, 3.0, 2.0},   // 2: bottom corner on plane 1.5 does not: plane 2.5 only
+      {-10, 10.0, 0.0},  // 3: every plane
+      {0.5, 0.5, 3.49},  // 4: planes 1.5 and 2.5 (0.5 is its lowest corner)
+  });
+  const FacetLayerRanges r = facet_layer_ranges(m, four_layers());
+  ASSERT_EQ(r.first.size(), 5u);
+  EXPECT_EQ(r.first[0], 0u);
+  EXPECT_EQ(r.last[0], 0u);
+  EXPECT_EQ(r.first[1], 0u);
+  EXPECT_EQ(r.last[1], 1u);
+  EXPECT_EQ(r.first[2], 2u);
+  EXPECT_EQ(r.last[2], 2u);
+  EXPECT_EQ(r.first[3], 0u);
+  EXPECT_EQ(r.last[3], 3u);
+  EXPECT_EQ(r.first[4], 1u);
+  EXPECT_EQ(r.last[4], 2u);
+}
+
+TEST(FacetLayerRanges, HorizontalBetweenPlanesAndOutsideTheGridCrossNone) {
+  const IndexedMesh m = facets_at_heights({
+      {1.5, 1.5, 1.5},     // horizontal, on a plane
+      {0.6, 1.4, 1.0},     // between two planes
+      {-5.0, -4.0, -4.5},  // below the grid
+      {3.5, 9.0, 4.0},     // from the top plane upwards (3.5 is its lowest corner)
+  });
+  const FacetLayerRanges r = facet_layer_ranges(m, four_layers());
+  for (std::size_t f = 0; f < 4; ++f) {
+    EXPECT_TRUE(crosses_none(r, f)) << f << ": " << r.first[f] << ".." << r.last[f];
+    EXPECT_EQ(r.first[f], std::numeric_limits<std::uint32_t>::max());
+  }
+}
+
+TEST(FacetLayerRanges, TiesAreDecidedOnTheDoublePlaneNotOnAnEstimate) {
+  // dz = 0.1: plane 2 is 0.1 * 2.5 = 0.25 exactly, plane 3 is 0.35000000000000003; a corner at
+  // 0.35 is below plane 3, one at 0.35000000000000003 is on it (and counts as above).
+  GridSpec g = four_layers();
+  g.dz = 0.1;
+  ASSERT_EQ(g.zk(3), 0.35000000000000003);
+  const IndexedMesh m = facets_at_heights({{0.0, 0.35, 0.1}, {0.0, 0.35000000000000003, 0.1}});
+  const FacetLayerRanges r = facet_layer_ranges(m, g);
+  EXPECT_EQ(r.last[0], 2u);
+  EXPECT_EQ(r.last[1], 3u);
+}
+
+TEST(BucketFacetsByFirstLayer, GroupsFacetsByTheirFirstLayerInFacetOrder) {
+  FacetLayerRanges r;
+  // Facets 0..4: first layers 2, none, 0, 2, 3.
+  r.first = {2, std::numeric_limits<std::uint32_t>::max(), 0, 2, 3};
+  r.last = {3, 0, 1, 2, 3};
+  const FacetBuckets b = bucket_facets_by_first_layer(r, 4);
+  EXPECT_EQ(b.offsets, (std::vector<std::uint32_t>{0, 1, 1, 3, 4}));
+  EXPECT_EQ(b.facets, (std::vector<FacetIndex>{2, 0, 3, 4}));
+}
+
+TEST(BucketFacetsByFirstLayer, NoCrossingFacetGivesEmptyBuckets) {
+  FacetLayerRanges r;
+  r.first = {std::numeric_limits<std::uint32_t>::max()};
+  r.last = {0};
+  const FacetBuckets b = bucket_facets_by_first_layer(r, 3);
+  EXPECT_EQ(b.offsets, (std::vector<std::uint32_t>{0, 0, 0, 0}));
+  EXPECT_TRUE(b.facets.empty());
+}
+
+TEST(SliceLayer, SegmentRunsWithTheMaterialOnItsLeft) {
+  // Corner a below the plane, b and c above; the facet's normal points to -x -y, so the material
+  // lies towards +x +y: the segment runs from edge c-a to edge a-b.
+  IndexedMesh m;
+  m.vertices = {{0, 0, 0}, {2, 0, 2}, {0, 2, 2}};
+  m.triangles = {{0, 1, 2}};
+  GridSpec g = four_layers();
+  g.z0 = 0.5;  // plane 0 at z = 1
+  const FacetIndex candidates[] = {0};
+  const LayerSegments s = slice_layer(m, candidates, g, 0);
+  EXPECT_EQ(s.layer, 0u);
+  EXPECT_EQ(s.z_mm, 1.0);
+  ASSERT_EQ(s.segments.size(), 1u);
+  const LayerSegment& seg = s.segments[0];
+  EXPECT_EQ(seg.facet, 0u);
+  EXPECT_EQ(seg.start_edge, (CrossedEdge{0, 2}));
+  EXPECT_EQ(seg.end_edge, (CrossedEdge{0, 1}));
+  EXPECT_EQ(seg.start, (Point2{0, 1}));
+  EXPECT_EQ(seg.end, (Point2{1, 0}));
+}
+
+TEST(SliceLayer, ReversedFacetGivesTheReversedSegment) {
+  IndexedMesh m;
+  m.vertices = {{0, 0, 0}, {2, 0, 2}, {0, 2, 2}};
+  m.triangles = {{0, 2, 1}};
+  GridSpec g = four_layers();
+  g.z0 = 0.5;
+  const FacetIndex candidates[] = {0};
+  const LayerSegments s = slice_layer(m, candidates, g, 0);
+  ASSERT_EQ(s.segments.size(), 1u);
+  EXPECT_EQ(s.segments[0].start_edge, (CrossedEdge{0, 1}));
+  EXPECT_EQ(s.segments[0].end_edge, (CrossedEdge{0, 2}));
+  EXPECT_EQ(s.segments[0].start, (Point2{1, 0}));
+  EXPECT_EQ(s.segments[0].end, (Point2{0, 1}));
+}
+
+TEST(SliceLayer, CornerOnThePlaneCountsAsAbove) {
+  // b lies on the plane z = 1: edge a-b ends the segment at b itself.
+  IndexedMesh m;
+  m.vertices = {{0, 0, 0}, {2, 0, 1}, {0, 2, 2}};
+  m.triangles = {{0, 1, 2}};
+  GridSpec g = four_layers();
+  g.z0 = 0.5;
+  const FacetIndex candidates[] = {0};
+  const LayerSegments s = slice_layer(m, candidates, g, 0);
+  ASSERT_EQ(s.segments.size(), 1u);
+  EXPECT_EQ(s.segments[0].end_edge, (CrossedEdge{0, 1}));
+  EXPECT_EQ(s.segments[0].end, (Point2{2, 0}));
+  EXPECT_EQ(s.segments[0].start, (Point2{0, 1}));
+}
+
+TEST(SliceLayer, FacetTouchingThePlaneFromAboveOrLyingInItGivesNoSegment) {
+  IndexedMesh m;
+  m.vertices = {{0, 0, 1}, {1, 0, 2}, {0, 1, 2}, {1, 1, 1}, {2, 1, 1}};
+  m.triangles = {{0, 1, 2}, {0, 3, 4}};  // touching from above; lying in the plane
+  GridSpec g = four_layers();
+  g.z0 = 0.5;
+  const FacetIndex candidates[] = {0, 1};
+  EXPECT_TRUE(slice_layer(m, candidates, g, 0).segments.empty());
+}
+
+TEST(SliceLayer, FacetTouchingThePlaneFromBelowGivesAPointSegmentAtTheCorner) {
+  // Only b reaches the plane; as it counts as above, both crossed edges end at b.
+  IndexedMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 1}, {0, 1, 0}};
+  m.triangles = {{0, 1, 2}};
+  GridSpec g = four_layers();
+  g.z0 = 0.5;
+  const FacetIndex candidates[] = {0};
+  const LayerSegments s = slice_layer(m, candidates, g, 0);
+  ASSERT_EQ(s.segments.size(), 1u);
+  EXPECT_EQ(s.segments[0].start_edge, (CrossedEdge{2, 1}));
+  EXPECT_EQ(s.segments[0].end_edge, (CrossedEdge{0, 1}));
+  EXPECT_EQ(s.segments[0].start, (Point2{1, 0}));
+  EXPECT_EQ(s.segments[0].end, (Point2{1, 0}));
+}
+
+TEST(SliceLayer, OnlyTheCandidatesAreCutInTheirOrder) {
+  IndexedMesh m;
+  m.vertices = {{0, 0, 0}, {2, 0, 2}, {0, 2, 2}};
+  m.triangles = {{0, 1, 2}, {0, 2, 1}, {0, 1, 2}};
+  GridSpec g = four_layers();
+  g.z0 = 0.5;
+  const FacetIndex candidates[] = {2, 1};
+  const LayerSegments s = slice_layer(m, candidates, g, 0);
+  ASSERT_EQ(s.segments.size(), 2u);
+  EXPECT_EQ(s.segments[0].facet, 2u);
+  EXPECT_EQ(s.segments[1].facet, 1u);
+  EXPECT_TRUE(slice_layer(m, {}, g, 0).segments.empty());
+}
+
+}  // namespace
+}  // namespace strata
