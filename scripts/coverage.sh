@@ -3,7 +3,7 @@
 # corpus tests, not the browser test): builds the `coverage` preset (clang -O0 with
 # -fprofile-instr-generate -fcoverage-mapping), runs the tests through `ctest --preset coverage`
 # (every process, the strata executable the CLI tests start included, writes
-# build/coverage/profiles/<pid>-<binary>.profraw), merges the profiles with llvm-profdata-14 and
+# build/coverage/profiles/<binary>.profraw, the processes of one binary merging into one file), merges the profiles with llvm-profdata-14 and
 # prints a markdown table per module of src/ (src/<m>/ and include/strata/<m>/; src/cli/ and the
 # sources generated under build/ left out), with a total row.
 # Usage: scripts/coverage.sh [--no-build]   (the lcov data stays in build/coverage/coverage.lcov)
