@@ -534,7 +534,7 @@ TEST(CellsReader, FolderIsNotACellsFile) {
 
 TEST(CellsReader, FileShorterThanAnyCellsFileIsRejected) {
   ScratchDir dir;
-  for (const std::string bytes : {std::string(), std::string("ST")}) {
+  for (const std::string& bytes : {std::string(), std::string("ST")}) {
     write_file_bytes(dir / "tiny.cells", bytes);
     const Error e = read_error(dir / "tiny.cells");
     EXPECT_EQ(e.location, (dir / "tiny.cells").string());

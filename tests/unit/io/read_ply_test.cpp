@@ -102,8 +102,11 @@ TEST(ReadPly, FirstLineMustBePly) {
 TEST(ReadPly, HeaderLineOverTheLimitIsAnError) {
   ReadLimits limits;
   limits.max_line_bytes = 16;
-  expect_error("ply\nformat ascii 1.0\ncomment " + std::string(20, 'c') + "\nend_header\n",
-               "part.ply:3", "line longer than the limit of 16 bytes", limits);
+  // Built with append: GCC 12 warns (-Wrestrict, a false positive) on a chain of operator+.
+  std::string header = "ply\nformat ascii 1.0\ncomment ";
+  header.append(20, 'c');
+  header.append("\nend_header\n");
+  expect_error(header, "part.ply:3", "line longer than the limit of 16 bytes", limits);
 }
 
 TEST(ReadPly, UnknownFormatIsNamed) {
