@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -9,9 +10,11 @@
 #include "cli/load_model.hpp"
 #include "strata/diagnose/diagnose_mesh.hpp"
 #include "strata/diagnose/mesh_report_json.hpp"
+#include "strata/io/output_file.hpp"
 #include "strata/slice/grid_spec.hpp"
 #include "strata/validate/validate_model.hpp"
 #include "strata/validate/validation_json.hpp"
+#include "strata/view/view_page.hpp"
 
 namespace strata::cli {
 
@@ -34,10 +37,47 @@ Error as_seen_by_the_page(Error e, const fs::path& model) {
   return e;
 }
 
+/// The view page's data for a model checked but not sliced yet: the display mesh and the
+/// check's defects, no layer (web/DATA.md), so that the page shows the defects in 3D at once.
+Result<void> write_model_view(const serve::TaskRequest& request, const LoadedModel& model,
+                              const diagnose::MeshReport& report) {
+  view::ViewPage page;
+  page.title = model.stem;
+  page.source_kind = "model";
+  page.source_path = request.model.filename().string();
+  const PageOptions defaults;
+  page.mesh = view::make_display_mesh(model.mesh, defaults.max_facets);
+  if (page.mesh->simplified) {
+    page.notes.push_back(fmt::format(
+        "display mesh simplified from {} to {} facets for the browser; slicing uses every facet",
+        page.mesh->facets_in_model, page.mesh->facets()));
+  }
+  page.notes.push_back(
+      "not sliced yet: the layers, the section and the report appear once the model is sliced");
+  page.check = report;
+  page.model_mesh = &model.mesh;
+  // No layer: the grid is the model's box, one cell, only for the page's frame and dimensions.
+  const Bbox3 box = model.mesh.bounds();
+  GridSpec& g = page.stack.grid;
+  g.x0 = box.min.x;
+  g.y0 = box.min.y;
+  g.z0 = box.min.z;
+  g.dx = std::max(box.max.x - box.min.x, 1e-9);
+  g.dy = std::max(box.max.y - box.min.y, 1e-9);
+  g.dz = std::max(box.max.z - box.min.z, 1e-9);
+  auto data = view::view_page_data(page);
+  if (!data) return data.error();
+  return io::write_text_file(serve::model_view_path(request), *data);
+}
+
 Result<std::string> run_check(const serve::TaskRequest& request) {
   auto model = load_model(request.model);
   if (!model) return as_seen_by_the_page(model.error(), request.model);
-  const diagnose::MeshReport report = diagnose::diagnose_mesh(model->mesh, model->soup);
+  diagnose::DiagnoseOptions diagnose_options;
+  diagnose_options.max_locations = PageOptions{}.max_defects;
+  const diagnose::MeshReport report =
+      diagnose::diagnose_mesh(model->mesh, model->soup, diagnose_options);
+  if (auto written = write_model_view(request, *model, report); !written) return written.error();
   json out = json::parse(diagnose::mesh_report_json(report));
   const auto bounds = model->mesh.bounds();
   json warnings = json::array();

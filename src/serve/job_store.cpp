@@ -475,8 +475,15 @@ std::optional<JobFile> JobStore::file(const std::string& id, const std::string& 
     job = find(id);
     if (!job || !job->visible) return std::nullopt;
     const bool slice_done = job->slice.state == "done";
-    if (!slice_done && kind != "model" && kind != "check" && kind != "validation") {
+    if (!slice_done && kind != "model" && kind != "check" && kind != "validation" &&
+        kind != "view") {
       return std::nullopt;
+    }
+    if (kind == "view" && !slice_done) {
+      // Before the slice, the page's data of the model alone, which the check leaves.
+      JobFile f{job->dir / "model-view.json", "view.json", "application/json"};
+      if (!regular_file(f.path)) return std::nullopt;
+      return f;
     }
   }
   const std::string& s = job->stem;

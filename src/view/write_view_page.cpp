@@ -187,16 +187,19 @@ Result<std::string> view_page_data(const ViewPage& page) {
                     {"cells", std::move(cells)},
                     {"contours", std::move(contours)},
                     {"hatches", std::move(hatches)}};
-  const ViewVolume& v = s.volume;
-  const std::string_view volume_bytes(reinterpret_cast<const char*>(v.blocks.data()),
-                                      v.blocks.size());
-  data["volume"] = {{"nx", v.nx},
-                    {"ny", v.ny},
-                    {"nz", v.nz},
-                    {"bx", v.bx},
-                    {"by", v.by},
-                    {"bz", v.bz},
-                    {"data", detail::base64(detail::zlib_compress(volume_bytes))}};
+  // No volume when no layer was collected (a model checked, not sliced yet).
+  data["volume"] = nullptr;
+  if (const ViewVolume& v = s.volume; !v.blocks.empty()) {
+    const std::string_view volume_bytes(reinterpret_cast<const char*>(v.blocks.data()),
+                                        v.blocks.size());
+    data["volume"] = {{"nx", v.nx},
+                      {"ny", v.ny},
+                      {"nz", v.nz},
+                      {"bx", v.bx},
+                      {"by", v.by},
+                      {"bz", v.bz},
+                      {"data", detail::base64(detail::zlib_compress(volume_bytes))}};
+  }
 
   data["validation"] = nullptr;
   if (!page.validation_json.empty()) {

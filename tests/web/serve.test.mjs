@@ -21,6 +21,8 @@ const dataDir = path.resolve(process.env.STRATA_DATA_DIR || path.join(repo, 'dat
 const sharedDir = path.resolve(process.env.STRATA_SHARED_DIR || path.join(repo, '..', 'shared'));
 const ring = path.join(dataDir, 'ring.stl');
 const unparseable = path.join(sharedDir, 'corpus', 'openscad', 'tests', 'data', 'stl', 'unparseable.stl');
+// 16 non-manifold edges and 356 self-intersecting facets (the corpus manifest).
+const defective = path.join(sharedDir, 'corpus', 'assimp-testmodels', 'models', 'STL', '3DSMaxExport.STL');
 const MAX_UPLOAD_MB = 4;
 const VIEWPORT = { width: 1500, height: 950 };
 
@@ -85,8 +87,9 @@ async function setOptions(page, options) {
 }
 
 /** The frame of the viewer of a job, once its page is ready. */
-async function viewerFrame(page, id) {
-  const element = await page.waitForSelector(`[data-testid="viewer-${id}"]`);
+/** The viewer of job id: of its slice (sliced), or of the model alone before it is sliced. */
+async function viewerFrame(page, id, sliced = true) {
+  const element = await page.waitForSelector(`[data-testid="viewer-${id}"][data-sliced="${sliced}"]`);
   const frame = await element.contentFrame();
   assert.ok(frame, `no viewer frame for job ${id}`);
   await frame.waitForFunction(() => window.strataView?.ready);
@@ -172,6 +175,26 @@ describe('strata serve', { skip: cli ? false : 'STRATA_CLI is not set' }, () => 
     assert.equal(await page.evaluate(() => window.strataServe.selected()), second);
     assert.equal(await page.locator('[data-testid^="job-"]').count() >= 2, true);
     assert.deepEqual(errors, []);
+    await context.close();
+  });
+
+  test('once checked, before any slice, the model and its defects are drawn in 3D', { skip: existsSync(defective) ? false : `${defective} is missing` }, async () => {
+    const { context, page } = await openApp();
+    await upload(page, defective);
+    await page.waitForSelector('[data-testid="verdict"]');
+    const id = await page.evaluate(() => window.strataServe.selected());
+    const frame = await viewerFrame(page, id, false);
+    assert.match(await frame.textContent('#model-meta'), /not sliced yet/);
+    const legend = await frame.textContent('#legend-3d');
+    assert.match(legend, /non-manifold edges: 16/);
+    assert.match(legend, /self-intersecting facets: 356/);
+    assert.equal(await frame.isVisible('#layer-canvas'), false, 'no layer view before the slice');
+    const colours = await frame.evaluate(() => {
+      const d = document.querySelector('#view3d canvas').toDataURL('image/png');
+      return d.length;
+    });
+    assert.ok(colours > 5000, 'the 3D view is drawn');
+    await page.screenshot({ path: path.join(artifacts, 'serve-checked.png') });
     await context.close();
   });
 

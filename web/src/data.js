@@ -90,7 +90,8 @@ export function checkData(data) {
   const l = data.layers;
   require(l && typeof l === 'object', 'no layers');
   require(l.encoding === '2bit-msb-zlib', `layer encoding ${JSON.stringify(l.encoding)} is not supported`);
-  require(Array.isArray(l.stored) && l.stored.length > 0, 'no stored layers');
+  // No stored layer: a model checked but not sliced yet (the page shows the model only).
+  require(Array.isArray(l.stored), 'layers.stored is missing');
   require(Array.isArray(l.cells) && l.cells.length === l.stored.length, 'layers.cells does not match layers.stored');
   for (let n = 0; n < l.stored.length; ++n) {
     const k = l.stored[n];

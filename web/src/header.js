@@ -13,7 +13,9 @@ export function fillHeader({ title, meta, verdict, notes }, data) {
   document.title = `${data.title} – strata view`;
   title.textContent = data.title;
   const g = data.grid;
-  const parts = [`${g.nx} × ${g.ny} × ${g.nz} cells`, `${data.grid.dx} × ${data.grid.dy} × ${data.grid.dz} mm`];
+  const parts = data.layerCount === 0
+    ? ['not sliced yet']
+    : [`${g.nx} × ${g.ny} × ${g.nz} cells`, `${data.grid.dx} × ${data.grid.dy} × ${data.grid.dz} mm`];
   if (data.raw.generator) parts.push(data.raw.generator);
   meta.textContent = parts.join(' · ');
 

@@ -36,11 +36,26 @@ function webglAvailable() {
   }
 }
 
+/** A model checked but not sliced yet: the 3D view with its defects, nothing else. */
+function startModelOnly(data, state) {
+  $('app').classList.add('model-only');
+  let modelView = null;
+  let modelReady = Promise.resolve();
+  if (webglAvailable()) {
+    modelView = new ModelView({ container: $('view3d'), legend: $('legend-3d'), toolbar: $('toolbar-3d'), data, state, layerImage: () => null });
+    modelReady = modelView.firstRender;
+  } else {
+    $('view3d').innerHTML = '<p class="error-inline">This browser offers no WebGL: the 3D view is not available.</p>';
+  }
+  return { ready: modelReady.then(() => ({ ok: true, error: null })), data, state, controls: null, layerView: null, modelView, section: null };
+}
+
 function start(raw) {
   const data = new StrataData(raw);
   const state = new ViewState(data);
   fillHeader({ title: $('model-title'), meta: $('model-meta'), verdict: $('verdict'), notes: $('notes') }, data);
   $('app').hidden = false;
+  if (data.layerCount === 0) return startModelOnly(data, state);
 
   const cellInfo = $('cell-info');
   const idleText = cellInfo.textContent;
@@ -139,12 +154,12 @@ window.strataView = Object.freeze({
   ready,
   error: () => failure,
   camera: () => app?.modelView?.cameraPosition() ?? null,
-  layer: () => app?.state.k ?? null,
+  layer: () => (app?.data.layerCount ? app.state.k : null),
   layerIndex: () => app?.state.index ?? null,
-  drawnLayer: () => app?.layerView.drawnK ?? null,
+  drawnLayer: () => app?.layerView?.drawnK ?? null,
   layers: () => (app ? [...app.data.stored] : []),
   grid: () => (app ? { ...app.data.grid } : null),
-  section: () => (app ? { axis: app.section.axis, position: app.section.position, complete: app.section.complete } : null),
+  section: () => (app?.section ? { axis: app.section.axis, position: app.section.position, complete: app.section.complete } : null),
   cellsShown: () => !!app?.modelView?.cells?.visible,
   // Where the cells of the layer or section view were last drawn, in client pixels.
   gridRect: (which) => {

@@ -226,6 +226,10 @@ export class ModelView {
   }
 
   #placeCut() {
+    if (this.data.layerCount === 0) {
+      this.cut.visible = false;
+      return;
+    }
     const z = this.data.layerZ(this.state.k);
     this.cut.position.z = z;
     this.clipPlane.constant = z;
@@ -274,6 +278,12 @@ export class ModelView {
       besideBox.disabled = true;
     }
     defectsBox.disabled = !this.defects.some((d) => d.object);
+    if (this.data.layerCount === 0) {
+      // Nothing sliced yet: no cutting plane, no clipped view.
+      planeBox.checked = false;
+      planeBox.disabled = true;
+      clipBox.disabled = true;
+    }
     meshBox.addEventListener('change', () => {
       this.meshGroup.visible = meshBox.checked;
       this.requestRender();

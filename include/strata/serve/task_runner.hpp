@@ -38,6 +38,12 @@ struct TaskControl {
 /// `strata check --json`; Slice: a summary; Validate: `strata validate --json`), or the Error
 /// to show (the reader's message for a malformed model). Must not print. A cancelled task
 /// returns any Error and leaves nothing in output_dir.
+/// Where a check task leaves the view page's data of the model alone (no layer yet): the job's
+/// folder, beside `output_dir`. The page shows it until the job is sliced.
+inline std::filesystem::path model_view_path(const TaskRequest& request) {
+  return request.output_dir.parent_path() / "model-view.json";
+}
+
 using TaskRunner = std::function<Result<std::string>(const TaskRequest&, const TaskControl&)>;
 
 }  // namespace strata::serve

@@ -52,7 +52,8 @@ function render() {
   $('validate').disabled = !readable || running(job?.validate);
   jobList.show(jobs, selected, compared);
   const shown = [];
-  if (job?.slice.state === 'done') shown.push(job);
+  // Once checked, the model and its defects in 3D; once sliced, the whole viewer.
+  if (job?.slice.state === 'done' || job?.check.state === 'done') shown.push(job);
   const other = jobs.find((j) => j.id === compared && j.slice.state === 'done' && j.id !== selected);
   if (other && shown.length) shown.push(other);
   frames.show(shown);

@@ -40,7 +40,7 @@ export function showModel(element, job) {
       `<div class="verdict-line"><span class="verdict-chip ${escapeHtml(r.verdict)}" data-testid="verdict">${escapeHtml(VERDICTS[r.verdict] ?? r.verdict)}</span> ` +
       `<span class="small">${escapeHtml(r.reason ?? '')}</span></div>` +
       (defects.length
-        ? `<ul class="defects">${defects.map(([label, n]) => `<li>${count(n)} ${escapeHtml(label)}</li>`).join('')}</ul><div class="muted small">The viewer draws them in 3D after slicing.</div>`
+        ? `<ul class="defects">${defects.map(([label, n]) => `<li>${count(n)} ${escapeHtml(label)}</li>`).join('')}</ul><div class="muted small">Drawn in colour in the 3D view.</div>`
         : '<div class="muted small">no defects found</div>') +
       (m.warnings?.length ? `<ul class="warnings">${m.warnings.map((w) => `<li>${escapeHtml(w)}</li>`).join('')}</ul>` : '');
   } else {

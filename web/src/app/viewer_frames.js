@@ -12,9 +12,10 @@ export class ViewerFrames {
     this.emptyHtml = container.innerHTML;
   }
 
-  /** jobs: up to two sliced jobs ({id, name, options}). */
+  /** jobs: up to two jobs ({id, name, options, slice}), sliced or only checked. */
   show(jobs) {
-    const ids = jobs.map((j) => j.id);
+    // A job's frame is loaded again once it is sliced: its data then holds the layers.
+    const ids = jobs.map((j) => `${j.id}:${j.slice?.state === 'done' ? 'sliced' : 'model'}`);
     if (ids.join() === this.shown.join()) return;
     this.shown = ids;
     if (!jobs.length) {
@@ -26,8 +27,9 @@ export class ViewerFrames {
     this.container.innerHTML = jobs
       .map(
         (job) =>
-          `<figure class="frame"><figcaption><b>${escapeHtml(job.name)}</b> <span class="mono">${job.id}</span> · ${escapeHtml(optionsSummary(job.options))}</figcaption>` +
-          `<iframe src="${viewerUrl(job.id)}" title="viewer of job ${job.id}" data-testid="viewer-${job.id}"></iframe></figure>`,
+          `<figure class="frame"><figcaption><b>${escapeHtml(job.name)}</b> <span class="mono">${job.id}</span>${job.options ? ` · ${escapeHtml(optionsSummary(job.options))}` : ''}</figcaption>` +
+          `<iframe src="${viewerUrl(job.id)}" title="viewer of job ${job.id}" data-testid="viewer-${job.id}"` +
+          ` data-sliced="${job.slice?.state === 'done'}"></iframe></figure>`,
       )
       .join('');
   }
