@@ -14,8 +14,10 @@ struct PngOptions {
   std::uint8_t empty = 0;
   std::uint8_t interior = 128;
   std::uint8_t boundary = 255;
-  /// zlib level 0 (none) .. 9 (smallest); 6 is zlib's default.
-  int compression_level = 6;
+  /// zlib level 0 (none) .. 9 (smallest). 3: a layer of three grey levels is long runs, which a
+  /// fast level packs nearly as well (rear_case: 3.4 MB at 3 against 2.2 MB at 6, the stack
+  /// written in well under half the time).
+  int compression_level = 3;
 };
 
 /// A sink that writes one 8-bit grey PNG a layer (SPEC §3.2): `dir/png/<stem>_00000.png`, ... (the
