@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/read_file.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 
@@ -21,12 +22,7 @@ struct Vector {
   std::string expected;
 };
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_file;
 
 std::vector<std::string> opts(const char* cell, const char* layer, const char* shell,
                               const char* mode, const char* rule) {

@@ -16,6 +16,7 @@
 #include "strata/io/write_stl.hpp"
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
+#include "support/read_file.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 
@@ -26,12 +27,7 @@ namespace fs = std::filesystem;
 using test::run_cli;
 using test::TempDir;
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_file;
 
 std::vector<std::string> names_in(const fs::path& dir) {
   std::vector<std::string> names;

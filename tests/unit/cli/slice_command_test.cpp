@@ -8,6 +8,7 @@
 #include "strata/io/read_cells.hpp"
 #include "strata/io/write_stl.hpp"
 #include "strata/mesh/primitive_models.hpp"
+#include "support/read_file.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 #include "support/text_meshes.hpp"
@@ -19,12 +20,7 @@ namespace fs = std::filesystem;
 using test::run_cli;
 using test::TempDir;
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_file;
 
 std::size_t files_in(const fs::path& dir) {
   if (!fs::exists(dir)) return 0;

@@ -11,6 +11,7 @@
 #include "strata/io/cells_format.hpp"
 #include "strata/io/write_stl.hpp"
 #include "strata/mesh/primitive_models.hpp"
+#include "support/read_file.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 
@@ -24,12 +25,7 @@ using test::TempDir;
 
 const std::string kRing = std::string(STRATA_DATA_DIR) + "/ring.stl";
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_file;
 
 std::string base64_decode(const std::string& text) {
   std::string out;
