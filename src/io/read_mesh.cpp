@@ -89,6 +89,22 @@ Result<TriangleSoup> unsupported(std::string_view name, std::string_view what) {
 Result<TriangleSoup> read_uncompressed(std::string_view bytes, std::string_view name,
                                        std::string_view inner_name, const ReadLimits& limits) {
   if (bytes.empty()) return bad_input(name, "empty file (0 bytes)");
+  const detail::StlBinaryLayout layout = detail::stl_binary_layout(bytes);
+  // A binary STL's 80-byte header is free text: bytes that fit its size are never decoded.
+  if (layout.fit != detail::StlBinaryFit::Exact &&
+      layout.fit != detail::StlBinaryFit::TrailingBytes) {
+    Result<detail::TextBytes> text = detail::decode_text_encoding(bytes, name);
+    if (!text) return text.error();
+    if (!text->encoding.empty()) {
+      Result<TriangleSoup> soup = read_uncompressed(text->text(bytes), name, inner_name, limits);
+      if (!soup) return soup;
+      soup->diagnostics.insert(
+          soup->diagnostics.begin(),
+          Diagnostic{Severity::Info, "io.text_encoding",
+                     fmt::format("{}: {} text, decoded before reading", name, text->encoding)});
+      return soup;
+    }
+  }
   const std::string ext = extension_of(inner_name);
 
   if (bytes.substr(0, 4) == std::string_view("PK\x03\x04", 4)) {
@@ -101,7 +117,6 @@ Result<TriangleSoup> read_uncompressed(std::string_view bytes, std::string_view 
   }
   if (starts_with_ply_magic(bytes)) return detail::read_ply_bytes(bytes, name, limits);
 
-  const detail::StlBinaryLayout layout = detail::stl_binary_layout(bytes);
   if (layout.fit == detail::StlBinaryFit::Exact ||
       layout.fit == detail::StlBinaryFit::TrailingBytes || detail::starts_with_solid(bytes) ||
       ext == ".stl") {

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -75,6 +76,26 @@ Result<std::string> decompress_gzip(std::string_view bytes, std::string_view nam
 
 /// True when the bytes start with the gzip magic 1f 8b.
 bool is_gzip(std::string_view bytes);
+
+/// How a text mesh file is encoded, as decode_text_encoding found it.
+struct TextBytes {
+  std::size_t mark_bytes = 0;  ///< length of the byte-order mark (0 when there is none)
+  std::string_view
+      encoding;  ///< "UTF-8 with a byte-order mark", "UTF-16 LE", "UTF-16 BE"; "" for none
+  std::optional<std::string> decoded;  ///< the text as UTF-8, for UTF-16
+
+  /// The text the readers take: `decoded` when set, else `bytes` without the mark.
+  std::string_view text(std::string_view bytes) const {
+    return decoded ? std::string_view(*decoded) : bytes.substr(mark_bytes);
+  }
+};
+
+/// The one decoding step before the text readers: a UTF-8 byte-order mark is dropped, UTF-16 LE
+/// or BE with a mark is decoded to UTF-8 (line numbers stay those of the file).
+/// @return Error{BadInput} naming the file for UTF-32 (with or without a mark), for text that
+///         looks like UTF-16 without a mark (ASCII bytes with NUL bytes between them), and for
+///         invalid UTF-16 (odd length, unpaired surrogate, with its byte offset)
+Result<TextBytes> decode_text_encoding(std::string_view bytes, std::string_view name);
 
 /// Wavefront OBJ: `v` and `f` lines (other statements ignored), polygons fan-triangulated.
 Result<TriangleSoup> read_obj_bytes(std::string_view bytes, std::string_view name,
