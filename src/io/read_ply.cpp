@@ -100,7 +100,24 @@ struct PlyHeader {
   std::vector<PlyElement> elements;
   std::size_t body_offset = 0;  ///< first byte after the end_header line
   std::size_t body_line = 0;    ///< line number of that byte (ASCII)
+  DiagnosticTally skipped_lines{"line"};
 };
+
+/// A header line for a message: at most 40 characters, control bytes as \xNN.
+std::string quote_line(std::string_view line) {
+  constexpr std::size_t kMaxChars = 40;
+  std::string out = "'";
+  for (std::size_t i = 0; i < line.size() && i < kMaxChars; ++i) {
+    const auto c = static_cast<unsigned char>(line[i]);
+    if (c < 0x20 || c == 0x7f) {
+      out += fmt::format("\\x{:02x}", c);
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  if (line.size() > kMaxChars) out += "...";
+  return out + "'";
+}
 
 Error error_at(std::string location, std::string message) {
   return Error{ErrorCode::BadInput, std::move(message), std::move(location)};
@@ -186,7 +203,14 @@ Result<PlyHeader> parse_header(std::string_view bytes, std::string_view name,
       header.body_line = line_number + 1;
       return header;
     } else {
-      return error_at(where, fmt::format("unknown PLY header keyword '{}'", word.substr(0, 40)));
+      // Some writers put free text in the header without the `comment` keyword (Blender 2.47:
+      // "Created by Blender3D 247 - www.blender.org"); assimp and MeshLab skip such lines.
+      header.skipped_lines.add("ply.header_line_skipped", Severity::Warning, line_number, [&] {
+        return fmt::format(
+            "{}: PLY header line {} skipped: it is not an element, property, format, comment, "
+            "obj_info or end_header line",
+            where, quote_line(line));
+      });
     }
   }
 }
@@ -516,6 +540,10 @@ Result<TriangleSoup> read_ply_bytes(std::string_view bytes, std::string_view nam
   Result<TriangleSoup> soup = triangulate_polygons(polygons, name, "PLY", 0, limits);
   if (!soup) return soup;
   soup->diagnostics.insert(soup->diagnostics.begin(), diagnostics.begin(), diagnostics.end());
+  Diagnostics header_warnings;  // in file order: the header's before the body's
+  header->skipped_lines.flush_into(header_warnings);
+  soup->diagnostics.insert(soup->diagnostics.begin(), header_warnings.begin(),
+                           header_warnings.end());
   soup->format = "ply";
   return soup;
 }

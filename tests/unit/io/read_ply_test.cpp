@@ -143,10 +143,6 @@ TEST(ReadPly, UnknownPropertyTypeIsNamed) {
                "unknown PLY property type 'quad'");
 }
 
-TEST(ReadPly, UnknownHeaderKeywordIsNamed) {
-  expect_error(ascii_header("bogus line\n"), "part.ply:3", "unknown PLY header keyword 'bogus'");
-}
-
 TEST(ReadPly, VertexElementNeedsXYAndZ) {
   expect_error(ascii_header("element vertex 1\nproperty float x\nproperty float y\n") + "0 0\n",
                "part.ply", "PLY vertex element lacks an x, y or z property");
