@@ -1,6 +1,8 @@
 #include <fmt/format.h>
 
+#include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -8,6 +10,7 @@
 
 #include "cli/command.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/option_checks.hpp"
 #include "strata/io/read_cells.hpp"
 
 namespace strata::cli {
@@ -123,7 +126,8 @@ void register_info_command(CLI::App& app, CommandRunner& runner) {
   cmd->add_flag("--json", options->json, "Print JSON instead of text");
   cmd->add_option("--cell", options->cell, "Print the class of cell I,J,K (0-based indices)")
       ->delimiter(',')
-      ->expected(3);
+      ->expected(3)
+      ->check(whole_number(0, std::numeric_limits<std::uint32_t>::max(), "cell index"));
   cmd->callback([options, &runner] { runner = [options] { return run_info(*options); }; });
 }
 

@@ -32,6 +32,11 @@ int main(int argc, char** argv) {
   CLI::App app{kDescription, "strata"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "strata 0.1.0");
+  // Usage errors read like strata's other messages: "strata: --layer: -1 is not a positive
+  // length in mm", one line, then where the options are listed.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return fmt::format("strata: {}\nRun with --help for more information.\n", e.what());
+  });
   strata::cli::CommandRunner runner;
   strata::cli::register_slice_command(app, runner);
   strata::cli::register_info_command(app, runner);

@@ -10,6 +10,7 @@
 
 #include "cli/command.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/serve_tasks.hpp"
 #include "strata/serve/server.hpp"
 
@@ -121,7 +122,7 @@ void register_serve_command(CLI::App& app, CommandRunner& runner) {
   cmd->add_option("MODEL", options->models, "Models to open as jobs at start");
   cmd->add_option("--port", options->port, "TCP port; 0 picks a free one (printed)")
       ->default_val(8080)
-      ->check(CLI::Range(0, 65535));
+      ->check(whole_number(0, 65535, "port number"));
   cmd->add_option("--bind", options->bind,
                   "Address to listen on (default loopback only; another address is reachable "
                   "from other machines)")
@@ -132,7 +133,7 @@ void register_serve_command(CLI::App& app, CommandRunner& runner) {
   cmd->add_option("--max-upload", options->max_upload_mb,
                   "Largest model upload in MB (1 MB = 10^6 bytes); larger ones are refused")
       ->default_val(serve::kDefaultMaxUploadBytes / 1e6)
-      ->check(CLI::PositiveNumber);
+      ->check(positive_real("size in MB"));
   cmd->callback([options, &runner] { runner = [options] { return run_serve(*options); }; });
 }
 

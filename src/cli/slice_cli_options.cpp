@@ -3,24 +3,28 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "cli/option_checks.hpp"
 
 namespace strata::cli {
 
 void add_slice_options(CLI::App& command, SliceCliOptions& o) {
   command.add_option("--layer", o.layer_mm, "Layer thickness dz in mm")
       ->default_val(kDefaultLayerHeightMm)
-      ->check(CLI::PositiveNumber);
+      ->check(positive_real("length in mm"));
   auto* cell = command.add_option("--cell", o.cell_mm, "Cell size in x and y, mm (default 0.1)")
-                   ->check(CLI::PositiveNumber);
+                   ->check(positive_real("length in mm"));
   command.add_option("--dx", o.dx_mm, "Cell size in x, mm")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_real("length in mm"))
       ->excludes(cell);
   command.add_option("--dy", o.dy_mm, "Cell size in y, mm")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_real("length in mm"))
       ->excludes(cell);
   command.add_option("--shell", o.shell_mm, "Boundary shell thickness t in mm")
       ->default_val(kDefaultShellThicknessMm)
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_real("length in mm"));
   command
       .add_option("--shell-mode", o.shell_mode,
                   "distance: cells whose centre is closer than t to the surface;\n"
@@ -37,15 +41,17 @@ void add_slice_options(CLI::App& command, SliceCliOptions& o) {
       .add_option("--scan-offset", o.scan_offset_mm,
                   "Shift every scanline by this many mm in +y (0.0001 = the published 0.1 um "
                   "mode; default 0, the exact symbolic rule)")
-      ->default_val(0.0);
+      ->default_val(0.0)
+      ->check(finite_real());
   command
       .add_option("--origin", o.origin,
                   "Grid origin X,Y,Z in mm (default: the model's minimum corner)")
       ->delimiter(',')
-      ->expected(3);
+      ->expected(3)
+      ->check(finite_real());
   command.add_option("--threads", o.threads, "Worker threads (default: all cores)")
       ->default_val(0)
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_number(0, std::numeric_limits<int>::max(), "number of threads"));
 }
 
 Result<SliceOptions> to_slice_options(const SliceCliOptions& o) {

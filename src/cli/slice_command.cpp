@@ -16,6 +16,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/flag_names.hpp"
 #include "cli/load_model.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/progress.hpp"
 #include "cli/slice_cli_options.hpp"
 #include "cli/slice_report.hpp"
@@ -340,11 +341,11 @@ void add_page_options(CLI::App& cmd, PageOptions& page) {
                  "MB of layers the HTML page may hold; above it the scanline segments are left "
                  "out, then every n-th layer only")
       ->default_val(page.budget_mb)
-      ->check(CLI::PositiveNumber);
+      ->check(positive_real("size in MB"));
   cmd.add_option("--page-facets", page.max_facets,
                  "Facets the page's 3D model may have; a larger mesh is simplified for display")
       ->default_val(page.max_facets)
-      ->check(CLI::Range(std::size_t{1000}, std::size_t{50'000'000}));
+      ->check(whole_number(1000, 50'000'000, "number of facets"));
   cmd.add_flag("!--no-hatches", page.hatches, "Leave the scanline segments out of the page");
 }
 

@@ -1,6 +1,8 @@
 #include <fmt/format.h>
 
+#include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -8,6 +10,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/flag_names.hpp"
 #include "cli/load_model.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/progress.hpp"
 #include "cli/slice_cli_options.hpp"
 #include "strata/io/output_file.hpp"
@@ -125,7 +128,7 @@ void register_validate_command(CLI::App& app, CommandRunner& runner) {
                   "Differing cells (and cells changed by the scan offset) listed in the JSON "
                   "report; all are counted")
       ->default_val(1000)
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_number(0, std::numeric_limits<std::int64_t>::max(), "number of cells"));
   cmd->add_flag("--no-contours", options->no_contours,
                 "Compare cells and loop counts only (skip the exact contour overlay and the "
                 "Hausdorff distances)");
@@ -139,7 +142,7 @@ void register_validate_command(CLI::App& app, CommandRunner& runner) {
   cmd->add_option("--reference-max-facets", options->reference_max_facets,
                   "Skip the reference slicer on meshes with more facets than this")
       ->default_val(200'000)
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_number(0, std::numeric_limits<std::int64_t>::max(), "number of facets"));
   cmd->add_flag("-q,--quiet", options->quiet, "Print nothing; the exit code tells the verdict");
   cmd->callback([options, &runner] { runner = [options] { return run_validate(*options); }; });
 }
