@@ -9,6 +9,7 @@
 #include "cli/command.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
+#include "cli/units_options.hpp"
 #include "strata/diagnose/diagnose_mesh.hpp"
 #include "strata/diagnose/mesh_report_json.hpp"
 #include "strata/diagnose/mesh_report_text.hpp"
@@ -31,6 +32,7 @@ struct CheckOptions {
   bool json_stdout = false;
   std::string repair_output;  ///< --repair OUT; empty: no repair
   bool fill_holes = false;
+  UnitsCliOptions units;
 };
 
 /// True when `out` names the same file as `in` (also through another spelling or a link).
@@ -69,7 +71,7 @@ int run_check(const CheckOptions& o) {
                               "--repair would overwrite the model it reads; name another file",
                               o.repair_output});
   }
-  auto model = load_model(o.model);
+  auto model = load_model(o.model, to_coordinate_scale(o.units));
   if (!model) return report_error(model.error());
   const diagnose::MeshReport report = diagnose::diagnose_mesh(model->mesh, model->soup);
 
@@ -142,6 +144,7 @@ void register_check_command(CLI::App& app, CommandRunner& runner) {
   cmd->add_flag("--fill-holes", options->fill_holes,
                 "With --repair: fill holes with triangles between their own border vertices")
       ->needs(repair);
+  add_units_options(*cmd, options->units);
   cmd->callback([options, &runner] { runner = [options] { return run_check(*options); }; });
 }
 

@@ -14,13 +14,15 @@ std::string model_stem(const std::filesystem::path& path) {
   return stem.empty() ? std::string("model") : stem;
 }
 
-Result<LoadedModel> load_model(const std::filesystem::path& path) {
+Result<LoadedModel> load_model(const std::filesystem::path& path,
+                               const io::CoordinateScale& scale) {
   using Clock = std::chrono::steady_clock;
   LoadedModel model;
   model.path = path;
   model.stem = model_stem(path);
+  model.scale = scale;
   const auto t0 = Clock::now();
-  auto soup = io::read_mesh(path);
+  auto soup = io::read_mesh(path, {}, scale);
   if (!soup) return soup.error();
   model.soup = std::move(soup).value();
   const auto t1 = Clock::now();

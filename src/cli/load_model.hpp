@@ -4,6 +4,7 @@
 #include <string>
 
 #include "strata/core/result.hpp"
+#include "strata/io/length_unit.hpp"
 #include "strata/mesh/indexed_mesh.hpp"
 #include "strata/mesh/triangle_soup.hpp"
 
@@ -15,12 +16,15 @@ struct LoadedModel {
   std::string stem;  ///< file name without its extensions (.stl, .stl.gz)
   TriangleSoup soup;
   IndexedMesh mesh;
+  io::CoordinateScale scale;  ///< how the file's coordinates were converted to mm
   double seconds_read = 0.0;
   double seconds_weld = 0.0;
 };
 
-/// Reads and welds a model; Error{BadInput} names the file.
-Result<LoadedModel> load_model(const std::filesystem::path& path);
+/// Reads (converting the coordinates to mm by `scale`) and welds a model; Error{BadInput} names
+/// the file.
+Result<LoadedModel> load_model(const std::filesystem::path& path,
+                               const io::CoordinateScale& scale = {});
 
 /// The model's stem: "part.stl.gz" -> "part".
 std::string model_stem(const std::filesystem::path& path);

@@ -12,6 +12,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/serve_tasks.hpp"
+#include "cli/units_options.hpp"
 #include "strata/serve/server.hpp"
 
 namespace strata::cli {
@@ -26,6 +27,7 @@ struct ServeCommandOptions {
   std::string bind = "127.0.0.1";
   std::string jobs_dir;
   double max_upload_mb = serve::kDefaultMaxUploadBytes / 1e6;
+  UnitsCliOptions units;  ///< how every model of the session is read
 };
 
 constexpr const char* kServeHelp =
@@ -80,7 +82,7 @@ int run_serve(const ServeCommandOptions& o) {
     if (temporary) fs::remove_all(options.jobs_dir, ec);
   };
 
-  auto server = serve::Server::start(options, make_serve_task_runner());
+  auto server = serve::Server::start(options, make_serve_task_runner(to_coordinate_scale(o.units)));
   if (!server) {
     remove_temporary();
     return report_error(server.error());
@@ -134,6 +136,7 @@ void register_serve_command(CLI::App& app, CommandRunner& runner) {
                   "Largest model upload in MB (1 MB = 10^6 bytes); larger ones are refused")
       ->default_val(serve::kDefaultMaxUploadBytes / 1e6)
       ->check(positive_real("size in MB"));
+  add_units_options(*cmd, options->units);
   cmd->callback([options, &runner] { runner = [options] { return run_serve(*options); }; });
 }
 

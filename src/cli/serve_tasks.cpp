@@ -70,8 +70,8 @@ Result<void> write_model_view(const serve::TaskRequest& request, const LoadedMod
   return io::write_text_file(serve::model_view_path(request), *data);
 }
 
-Result<std::string> run_check(const serve::TaskRequest& request) {
-  auto model = load_model(request.model);
+Result<std::string> run_check(const serve::TaskRequest& request, const io::CoordinateScale& scale) {
+  auto model = load_model(request.model, scale);
   if (!model) return as_seen_by_the_page(model.error(), request.model);
   diagnose::DiagnoseOptions diagnose_options;
   diagnose_options.max_locations = PageOptions{}.max_defects;
@@ -93,9 +93,12 @@ Result<std::string> run_check(const serve::TaskRequest& request) {
 }
 
 Result<std::string> run_slice_task(const serve::TaskRequest& request,
-                                   const serve::TaskControl& control) {
+                                   const serve::TaskControl& control,
+                                   const io::CoordinateScale& scale) {
   auto options = slice_options_of_json(request.options_json);
   if (!options) return options.error();
+  options->slice.units.units = io::length_unit_name(scale.units);
+  options->slice.units.scale = scale.scale;
   options->model = request.model.string();
   options->output_dir = request.output_dir.string();
   options->formats = "cells,png,svg,cli,json,html";
@@ -124,7 +127,8 @@ Result<std::string> run_slice_task(const serve::TaskRequest& request,
 }
 
 Result<std::string> run_validate_task(const serve::TaskRequest& request,
-                                      const serve::TaskControl& control) {
+                                      const serve::TaskControl& control,
+                                      const io::CoordinateScale& scale) {
   auto command = slice_options_of_json(request.options_json);
   if (!command) return command.error();
   auto options = to_slice_options(command->slice);
@@ -134,7 +138,7 @@ Result<std::string> run_validate_task(const serve::TaskRequest& request,
         "fill rule winding cannot be validated: the exact path does not implement it; use "
         "nonzero or evenodd");
   }
-  auto model = load_model(request.model);
+  auto model = load_model(request.model, scale);
   if (!model) return as_seen_by_the_page(model.error(), request.model);
   auto grid = make_grid(model->mesh.bounds(), options->grid);
   if (!grid) return grid.error();
@@ -231,16 +235,16 @@ Result<SliceCommandOptions> slice_options_of_json(const std::string& json_text) 
   return o;
 }
 
-serve::TaskRunner make_serve_task_runner() {
-  return [](const serve::TaskRequest& request,
-            const serve::TaskControl& control) -> Result<std::string> {
+serve::TaskRunner make_serve_task_runner(const io::CoordinateScale& scale) {
+  return [scale](const serve::TaskRequest& request,
+                 const serve::TaskControl& control) -> Result<std::string> {
     switch (request.kind) {
       case serve::TaskKind::Check:
-        return run_check(request);
+        return run_check(request, scale);
       case serve::TaskKind::Slice:
-        return run_slice_task(request, control);
+        return run_slice_task(request, control, scale);
       case serve::TaskKind::Validate:
-        return run_validate_task(request, control);
+        return run_validate_task(request, control, scale);
     }
     return Error{ErrorCode::Internal, "unknown task", {}};
   };

@@ -4,6 +4,7 @@
 
 #include "cli/slice_command.hpp"
 #include "strata/core/result.hpp"
+#include "strata/io/length_unit.hpp"
 #include "strata/serve/task_runner.hpp"
 
 namespace strata::cli {
@@ -16,6 +17,7 @@ Result<SliceCommandOptions> slice_options_of_json(const std::string& json_text);
 
 /// The tasks of `strata serve`, done with the same functions as `strata check`, `strata slice`
 /// and `strata validate`.
-serve::TaskRunner make_serve_task_runner();
+/// Every model is read with `scale` (the session's --units and --scale).
+serve::TaskRunner make_serve_task_runner(const io::CoordinateScale& scale = {});
 
 }  // namespace strata::cli

@@ -52,6 +52,7 @@ void add_slice_options(CLI::App& command, SliceCliOptions& o) {
   command.add_option("--threads", o.threads, "Worker threads (default: all cores)")
       ->default_val(0)
       ->check(whole_number(0, std::numeric_limits<int>::max(), "number of threads"));
+  add_units_options(command, o.units);
 }
 
 Result<SliceOptions> to_slice_options(const SliceCliOptions& o) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/units_options.hpp"
 #include "strata/core/result.hpp"
 #include "strata/slice/slice_options.hpp"
 
@@ -22,10 +23,11 @@ struct SliceCliOptions {
   double scan_offset_mm = 0.0;
   std::vector<double> origin;
   int threads = 0;
+  UnitsCliOptions units;  ///< how the model is read: --units, --scale
 };
 
 /// Adds --layer, --cell, --dx, --dy, --shell, --shell-mode, --fill-rule, --scan-offset,
-/// --origin and --threads to a subcommand.
+/// --origin, --threads, --units and --scale to a subcommand.
 void add_slice_options(CLI::App& command, SliceCliOptions& options);
 
 /// Checks and converts; Error{Usage} says which option is wrong.

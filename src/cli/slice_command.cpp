@@ -105,7 +105,7 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   const Error cancel_error{ErrorCode::Internal, kCancelledMessage, {}};
 
   SliceOutcome out;
-  auto model = load_model(o.model);
+  auto model = load_model(o.model, to_coordinate_scale(o.slice.units));
   if (!model) return model.error();
   out.model = std::move(model).value();
   LoadedModel& m = out.model;

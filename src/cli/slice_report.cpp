@@ -30,6 +30,8 @@ nlohmann::json slice_report_json(const LoadedModel& model, const diagnose::MeshR
   report["model"] = {
       {"path", model.path.string()},
       {"format", model.soup.format},
+      {"units", io::length_unit_name(model.scale.units)},
+      {"scale", model.scale.scale},
       {"facets", model.mesh.triangles.size()},
       {"vertices", model.mesh.vertices.size()},
       {"bbox_min_mm", vec(box.min)},

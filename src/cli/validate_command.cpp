@@ -66,7 +66,7 @@ int run_validate(const ValidateCommandOptions& o) {
                               "implement it (solid angles are not exact); use nonzero or evenodd",
                               {}});
   }
-  auto model = load_model(o.model);
+  auto model = load_model(o.model, to_coordinate_scale(o.slice.units));
   if (!model) return report_error(model.error());
   for (const auto& d : model->soup.diagnostics) {
     std::fprintf(stderr, "strata: warning: %s\n", d.message.c_str());

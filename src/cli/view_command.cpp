@@ -194,7 +194,13 @@ int run_view_folder(const ViewCommandOptions& o) {
   std::optional<LoadedModel> model;
   if (found->report) {
     if (const auto path = locate_model(report, dir)) {
-      auto loaded = load_model(*path);
+      // Read as the slice read it: the report records the unit and scale asked then.
+      io::CoordinateScale scale;
+      scale.units =
+          io::parse_length_unit(report.value(json::json_pointer("/model/units"), std::string("mm")))
+              .value_or(io::LengthUnit::Millimetre);
+      scale.scale = report.value(json::json_pointer("/model/scale"), 1.0);
+      auto loaded = load_model(*path, scale);
       if (!loaded) return report_error(loaded.error());
       model = std::move(loaded).value();
     } else {

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -135,10 +137,34 @@ Result<TriangleSoup> read_uncompressed(std::string_view bytes, std::string_view 
                                : fmt::format("'{}' content is not STL, OBJ, OFF or PLY", ext));
 }
 
-}  // namespace
+/// Converts the coordinates read to millimetres (CoordinateScale).
+Result<void> apply_scale(TriangleSoup& soup, std::string_view name, const CoordinateScale& scale) {
+  const double factor = scale.factor();
+  if (factor == 1.0) return {};
+  // STL is single precision (SPEC §2): the scaled coordinate is a float32 again.
+  const bool single = soup.format.starts_with("stl");
+  const double largest =
+      single ? std::numeric_limits<float>::max() : std::numeric_limits<double>::max();
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+    for (Vec3& corner : soup.triangles[t]) {
+      for (double* c : {&corner.x, &corner.y, &corner.z}) {
+        const double scaled = *c * factor;
+        if (!(std::fabs(scaled) <= largest)) {
+          return Error{ErrorCode::BadInput,
+                       fmt::format("coordinate {} in {} is {} mm, beyond the largest {} ({:g})", *c,
+                                   length_unit_name(scale.units), scaled,
+                                   single ? "STL coordinate (float32)" : "double", largest),
+                       fmt::format("{}: facet {}", name, t)};
+        }
+        *c = single ? static_cast<double>(static_cast<float>(scaled)) : scaled;
+      }
+    }
+  }
+  return {};
+}
 
-Result<TriangleSoup> read_mesh_bytes(std::string_view bytes, std::string_view name,
-                                     const ReadLimits& limits) {
+Result<TriangleSoup> read_unscaled(std::string_view bytes, std::string_view name,
+                                   const ReadLimits& limits) {
   if (!detail::is_gzip(bytes)) return read_uncompressed(bytes, name, name, limits);
 
   const std::string lower = lower_ascii(name);
@@ -161,7 +187,23 @@ Result<TriangleSoup> read_mesh_bytes(std::string_view bytes, std::string_view na
   return soup;
 }
 
-Result<TriangleSoup> read_mesh(const std::filesystem::path& path, const ReadLimits& limits) {
+}  // namespace
+
+Result<TriangleSoup> read_mesh_bytes(std::string_view bytes, std::string_view name,
+                                     const ReadLimits& limits, const CoordinateScale& scale) {
+  if (!(scale.scale > 0.0) || !std::isfinite(scale.scale)) {
+    return Error{ErrorCode::Usage,
+                 fmt::format("the scale factor must be a finite number > 0, got {}", scale.scale),
+                 {}};
+  }
+  Result<TriangleSoup> soup = read_unscaled(bytes, name, limits);
+  if (!soup) return soup;
+  if (auto scaled = apply_scale(*soup, name, scale); !scaled) return scaled.error();
+  return soup;
+}
+
+Result<TriangleSoup> read_mesh(const std::filesystem::path& path, const ReadLimits& limits,
+                               const CoordinateScale& scale) {
   const std::string name = path.string();
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
@@ -188,7 +230,7 @@ Result<TriangleSoup> read_mesh(const std::filesystem::path& path, const ReadLimi
     bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
   if (bytes.empty()) return bad_input(name, "empty file (0 bytes)");
-  return read_mesh_bytes(bytes, name, limits);
+  return read_mesh_bytes(bytes, name, limits, scale);
 }
 
 }  // namespace strata::io

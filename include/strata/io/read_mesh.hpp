@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "strata/core/result.hpp"
+#include "strata/io/length_unit.hpp"
 #include "strata/mesh/triangle_soup.hpp"
 
 namespace strata::io {
@@ -29,12 +30,18 @@ struct ReadLimits {
 ///         ("path:12", text formats; lines of the decompressed text for .gz) or the facet
 ///         ("path: facet 7", binary STL, counted from 0), and whose message says what was wrong.
 ///         A file with no triangles is an error.
-Result<TriangleSoup> read_mesh(const std::filesystem::path& path, const ReadLimits& limits = {});
+/// @param scale  the unit of the file's coordinates and a factor: the coordinates read are
+///               converted to millimetres (CoordinateScale); a coordinate that overflows its type
+///               once scaled is Error{BadInput} naming the facet, a scale that is not finite and
+///               positive Error{Usage}
+Result<TriangleSoup> read_mesh(const std::filesystem::path& path, const ReadLimits& limits = {},
+                               const CoordinateScale& scale = {});
 
 /// Same as read_mesh for bytes already in memory: `name` is used in messages and its extension
 /// (after stripping `.gz`) for the dispatch to OBJ/OFF/PLY, exactly as a path's would be.
 Result<TriangleSoup> read_mesh_bytes(std::string_view bytes, std::string_view name,
-                                     const ReadLimits& limits = {});
+                                     const ReadLimits& limits = {},
+                                     const CoordinateScale& scale = {});
 
 /// Reads STL from bytes already in memory; `name` is used in messages.
 /// Binary when 84 + 50 * count == size (count = uint32 at offset 80), or when the file is longer
