@@ -8,6 +8,7 @@
 
 #include "cli/command.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/job_plan.hpp"
 #include "cli/load_model.hpp"
 #include "cli/units_options.hpp"
 #include "strata/diagnose/diagnose_mesh.hpp"
@@ -19,6 +20,8 @@
 #include "strata/repair/repair_log_json.hpp"
 #include "strata/repair/repair_log_text.hpp"
 #include "strata/repair/repair_mesh.hpp"
+#include "strata/slice/grid_spec.hpp"
+#include "strata/slice/slice_options.hpp"
 
 namespace strata::cli {
 
@@ -106,8 +109,23 @@ int run_check(const CheckOptions& o) {
   }
   std::fprintf(stdout, "model    %s (%s)\n", model->path.string().c_str(),
                model->soup.format.c_str());
-  for (const auto& d : model->soup.diagnostics)
-    std::fprintf(stdout, "warning  %s\n", d.message.c_str());
+  for (const auto& d : model->soup.diagnostics) {
+    std::fprintf(stdout, "%s  %s\n", d.severity == Severity::Warning ? "warning" : "note   ",
+                 d.message.c_str());
+  }
+  const Bbox3 box = model->mesh.bounds();
+  std::fprintf(stdout, "size     %s\n", size_text(box).c_str());
+  if (const auto warning =
+          size_warning(box, Vec3{kDefaultCellSizeMm, kDefaultCellSizeMm, kDefaultLayerHeightMm})) {
+    std::fprintf(stdout, "warning  %s\n", warning->c_str());
+  }
+  // What `strata slice` would make of it with the default settings.
+  if (const auto grid = make_grid(box, GridOptions{}); grid) {
+    const JobPlan plan = plan_job(*grid, {"cells", "png", "json", "html"}, 0);
+    std::fprintf(stdout, "slice    at the defaults: %s\n", plan_text(plan).c_str());
+  } else {
+    std::fprintf(stdout, "slice    at the defaults: %s\n", grid.error().message.c_str());
+  }
   std::fputs(diagnose::mesh_report_text(report).c_str(), stdout);
   if (repaired) {
     std::fputs("\n", stdout);

@@ -14,6 +14,11 @@ std::string model_stem(const std::filesystem::path& path) {
   return stem.empty() ? std::string("model") : stem;
 }
 
+Error about_model(Error error, const std::filesystem::path& model) {
+  if (error.location.empty()) error.location = model.string();
+  return error;
+}
+
 Result<LoadedModel> load_model(const std::filesystem::path& path,
                                const io::CoordinateScale& scale) {
   using Clock = std::chrono::steady_clock;

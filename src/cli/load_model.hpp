@@ -26,6 +26,10 @@ struct LoadedModel {
 Result<LoadedModel> load_model(const std::filesystem::path& path,
                                const io::CoordinateScale& scale = {});
 
+/// `error` located at the model when it names no place (a grid too large for the model, say),
+/// so that every message about a model names its file.
+Error about_model(Error error, const std::filesystem::path& model);
+
 /// The model's stem: "part.stl.gz" -> "part".
 std::string model_stem(const std::filesystem::path& path);
 

@@ -141,7 +141,7 @@ Result<std::string> run_validate_task(const serve::TaskRequest& request,
   auto model = load_model(request.model, scale);
   if (!model) return as_seen_by_the_page(model.error(), request.model);
   auto grid = make_grid(model->mesh.bounds(), options->grid);
-  if (!grid) return grid.error();
+  if (!grid) return as_seen_by_the_page(about_model(grid.error(), request.model), request.model);
   validate::ValidateOptions vopts;
   vopts.progress = control.progress;
   auto report = validate::validate_model(model->mesh, *grid, *options, vopts);

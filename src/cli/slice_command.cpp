@@ -1,6 +1,7 @@
 #include "cli/slice_command.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <cctype>
 #include <chrono>
@@ -15,6 +16,7 @@
 #include "cli/command.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/flag_names.hpp"
+#include "cli/job_plan.hpp"
 #include "cli/load_model.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/progress.hpp"
@@ -122,7 +124,10 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
     out.seconds_repair = std::chrono::duration<double>(Clock::now() - repair_started).count();
   }
   auto grid = make_grid(m.mesh.bounds(), options->grid);
-  if (!grid) return grid.error();
+  if (!grid) return about_model(grid.error(), m.path);
+  out.plan = plan_job(*grid, *formats, options->threads);
+  out.size_warning = size_warning(m.mesh.bounds(), Vec3{grid->dx, grid->dy, grid->dz});
+  if (control.planned) control.planned(out.plan, out.size_warning);
   if (cancelled()) return cancel_error;
 
   out.dir = o.output_dir.empty() ? fs::path(m.stem + "-strata") : fs::path(o.output_dir);
@@ -133,6 +138,8 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   if (dir_existed && !fs::is_directory(dir, ec)) {
     return Error{ErrorCode::Usage, "the output path exists and is not a folder", dir.string()};
   }
+  // Before any output: a job whose files cannot fit fails now, not after hours of slicing.
+  if (auto full = check_free_space(out.plan, dir)) return *full;
 
   std::vector<std::unique_ptr<LayerSink>> owned;
   std::vector<std::string>& written = out.written;
@@ -212,6 +219,7 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   out.options = *options;
   const double seconds_total = std::chrono::duration<double>(Clock::now() - started).count();
   auto report = slice_report_json(m, mesh_report, *options, o.kernel, out.summary, seconds_total);
+  report["plan"] = nlohmann::json::parse(plan_json(out.plan));
   if (out.repair_log) {
     report["repair"] = nlohmann::json::parse(repair::repair_log_json(*out.repair_log));
     report["repair"]["seconds"] = out.seconds_repair;
@@ -272,7 +280,15 @@ int run_slice(const SliceCommandOptions& o) {
   };
   control.read_warnings = [&](const Diagnostics& diagnostics) {
     for (const auto& d : diagnostics) {
-      std::fprintf(stderr, "strata: warning: %s\n", d.message.c_str());
+      std::fprintf(stderr, "strata: %s: %s\n", d.severity == Severity::Warning ? "warning" : "note",
+                   d.message.c_str());
+    }
+  };
+  control.planned = [&](const JobPlan& plan, const std::optional<std::string>& warning) {
+    if (warning) std::fprintf(stderr, "strata: warning: %s\n", warning->c_str());
+    // The job's size before it starts, for the person watching; logs get it in the report.
+    if (isatty(STDERR_FILENO) == 1) {
+      std::fprintf(stderr, "strata: job: %s\n", plan_text(plan).c_str());
     }
   };
   progress.emplace("slicing " + fs::path(o.model).filename().string());

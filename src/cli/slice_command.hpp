@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/job_plan.hpp"
 #include "cli/load_model.hpp"
 #include "cli/slice_cli_options.hpp"
 #include "strata/core/result.hpp"
@@ -50,6 +51,9 @@ struct SliceRunControl {
   /// Told the reader's warnings as soon as the model is read, so that they are seen even when a
   /// later step fails (may be empty).
   std::function<void(const Diagnostics&)> read_warnings;
+  /// Told the job's plan, and a warning when the model's size suggests another unit, once the
+  /// grid is known and before anything is written (may be empty).
+  std::function<void(const JobPlan&, const std::optional<std::string>&)> planned;
 };
 
 /// What a slice run did, for the summary the CLI prints or the server shows.
@@ -64,6 +68,8 @@ struct SliceOutcome {
   std::vector<std::string> written;  ///< the outputs, as listed to the user
   std::optional<std::filesystem::path> page_path;
   double seconds_total = 0.0;
+  JobPlan plan;                             ///< what the job was to make, before it started
+  std::optional<std::string> size_warning;  ///< the model's size suggests another unit
 };
 
 /// Reads, (repairs,) checks and slices the model and writes the chosen outputs; prints nothing.

@@ -69,10 +69,11 @@ int run_validate(const ValidateCommandOptions& o) {
   auto model = load_model(o.model, to_coordinate_scale(o.slice.units));
   if (!model) return report_error(model.error());
   for (const auto& d : model->soup.diagnostics) {
-    std::fprintf(stderr, "strata: warning: %s\n", d.message.c_str());
+    std::fprintf(stderr, "strata: %s: %s\n", d.severity == Severity::Warning ? "warning" : "note",
+                 d.message.c_str());
   }
   auto grid = make_grid(model->mesh.bounds(), options->grid);
-  if (!grid) return report_error(grid.error());
+  if (!grid) return report_error(about_model(grid.error(), model->path));
 
   validate::ValidateOptions vopts;
   vopts.max_listed_cells = o.max_listed;
