@@ -3,7 +3,8 @@
 # view page's packages from package-lock.json (npm ci) when node_modules/ does not match it.
 # Usage: scripts/setup.sh [test | coverage]
 #   test: also clang with its sanitizer and libFuzzer runtimes (the `asan` preset the test
-#         command builds) and Debian's chromium (the browser tests of the view page)
+#         command builds), Debian's chromium (the browser tests of the view page) and
+#         assimp-utils (the reference reader of tests/corpus/assimp_agreement_test.cpp)
 #   coverage: the same, and llvm-profdata-14 and llvm-cov-14 (scripts/coverage.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,7 +18,7 @@ packages=(
 case "${1:-}" in
   test | sanitizers | coverage)
     # Debian 12: clang 14; the ASan, UBSan and libFuzzer runtimes are in libclang-rt-14-dev.
-    packages+=(clang libclang-rt-14-dev chromium)
+    packages+=(clang libclang-rt-14-dev chromium assimp-utils)
     ;;&
   coverage)
     # The profile runtime is in libclang-rt-14-dev too; the tools that read profiles in llvm-14.
