@@ -13,7 +13,7 @@ TEST(IsLoopbackHost, AcceptsLoopbackNamesWithAnyPort) {
     EXPECT_TRUE(is_loopback_host(host)) << host;
   }
   for (const char* host : {"", "evil.example", "127.0.0.1.evil.example", "localhost.evil",
-                           "[::2]:80", "[::1]x", "10.0.0.1:8080"}) {
+                           "[::2]:80", "[::1]x", "[::1", "10.0.0.1:8080"}) {
     EXPECT_FALSE(is_loopback_host(host)) << host;
   }
 }
