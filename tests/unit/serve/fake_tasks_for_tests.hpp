@@ -18,8 +18,9 @@ namespace strata::serve::testing {
 /// A task runner without geometry, for the tests of the job store and the server; what a task
 /// does is steered by the model's first line (check) and by the task's options (slice):
 /// - check: a model whose text starts with "solid" gives {"verdict":"printable"} and leaves the
-///   model's page data {"model":"<file name>"} at model_view_path(); any other model fails with
-///   Error{BadInput, "not a mesh", model path}.
+///   model's page data {"model":"<file name>"} at model_view_path(), or, starting with "solid
+///   wait", is checked until cancelled; any other model fails with Error{BadInput, "not a mesh",
+///   model path}.
 /// - slice: writes the files a real slice writes, with known content: <stem>.cells ("cells of
 ///   <stem>"), <stem>.cli, <stem>.json, <stem>.html, view.json ({"layers":N}), one PNG and one
 ///   SVG layer in png/ and svg/; reports progress layer by layer for "layers" (default 2) and
@@ -54,9 +55,12 @@ class FakeTasks {
     using nlohmann::json;
     const json options = json::parse(r.options_json.empty() ? "{}" : r.options_json);
     if (r.kind == TaskKind::Check) {
-      std::string first(5, '\0');
-      std::ifstream(r.model, std::ios::binary).read(first.data(), 5);
-      if (first != "solid") return Error{ErrorCode::BadInput, "not a mesh", r.model.string()};
+      std::string first(10, '\0');
+      std::ifstream(r.model, std::ios::binary).read(first.data(), 10);
+      if (first.rfind("solid", 0) != 0) {
+        return Error{ErrorCode::BadInput, "not a mesh", r.model.string()};
+      }
+      if (first == "solid wait") return wait_for_cancel(c);
       std::ofstream(model_view_path(r)) << json{{"model", r.model.filename().string()}}.dump();
       return std::string(R"({"verdict":"printable"})");
     }

@@ -171,6 +171,7 @@ TEST(HttpSession, AForeignHostIs403) {
 
 TEST(HttpSession, KeepAliveServesRequestsOnOneConnectionUntilClose) {
   TestServer s;
+  const std::string id = s.upload("part.stl", kGoodModel);
   HttpClient client(s.port());
   for (int n = 0; n < 3; ++n) {
     const HttpReply r = client.request("GET", "/api/jobs");
@@ -179,8 +180,11 @@ TEST(HttpSession, KeepAliveServesRequestsOnOneConnectionUntilClose) {
   }
   // An error answer keeps the connection too, once its body was read.
   EXPECT_EQ(client.request("GET", "/nothing").status, 404u);
-  const HttpReply last = client.request("GET", "/api/jobs", {}, {{"Connection", "close"}});
+  // A download asked to close the connection after it.
+  const HttpReply last =
+      client.request("GET", "/api/jobs/" + id + "/files/model", {}, {{"Connection", "close"}});
   EXPECT_EQ(last.status, 200u);
+  EXPECT_EQ(last.body, kGoodModel);
   EXPECT_FALSE(last.keep_alive);
   EXPECT_EQ(client.read_until_closed(), "");
 }

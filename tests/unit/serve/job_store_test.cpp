@@ -190,6 +190,67 @@ TEST_F(JobStoreTest, AJobFolderInTheWayIsAnInternalError) {
   EXPECT_EQ(id.error().message, "cannot make the job's folder: Not a directory");
   EXPECT_EQ(id.error().location, (root_ / "000001").string());
   EXPECT_FALSE(store.exists("000001"));
+  test::write_text_file(root_ / "000002", "another file");
+  const auto added = store.add_file(model_);
+  ASSERT_FALSE(added);
+  EXPECT_EQ(added.error().message, "cannot make the job's folder: Not a directory");
+}
+
+TEST_F(JobStoreTest, AJobBeingUploadedIsInvisible) {
+  JobStore store(root_, tasks_.runner());
+  const auto id = store.reserve("part.stl");
+  ASSERT_TRUE(id);
+  EXPECT_EQ(store.slice(*id, "{}").error().message, "no such job");
+  EXPECT_EQ(store.validate(*id, "{}").error().message, "no such job");
+  EXPECT_EQ(store.remove(*id).error().message, "no such job");
+  EXPECT_FALSE(store.exists(*id));
+  EXPECT_FALSE(store.status_json(*id));
+  EXPECT_FALSE(store.file(*id, "model"));
+  EXPECT_TRUE(fs::is_directory(root_ / *id / "model"));
+}
+
+TEST_F(JobStoreTest, DiscardLeavesACommittedJobAlone) {
+  JobStore store(root_, tasks_.runner());
+  const auto id = store.add_file(model_);
+  ASSERT_TRUE(id);
+  store.discard(*id);
+  EXPECT_TRUE(store.exists(*id));
+  EXPECT_EQ(test::read_file(root_ / *id / "model" / model_.filename()), "solid x\nendsolid x\n");
+}
+
+TEST_F(JobStoreTest, AnUploadCommittedWhileStoppingIsKeptUnchecked) {
+  JobStore store(root_, tasks_.runner());
+  const auto id = store.reserve("part.stl");
+  ASSERT_TRUE(id);
+  test::write_text_file(store.model_path(*id), "solid x\n");
+  store.shutdown();
+  store.commit(*id);
+  ASSERT_TRUE(store.exists(*id));
+  EXPECT_EQ(json::parse(*store.status_json(*id))["check"]["state"], "none");
+  EXPECT_EQ(json::parse(test::read_file(root_ / *id / "job.json"))["check"]["state"], "none");
+}
+
+TEST_F(JobStoreTest, ASliceOfAModelStillBeingCheckedChecksItsNewJobAgain) {
+  JobStore store(root_, tasks_.runner());
+  test::write_text_file(model_, "solid wait\n");
+  const auto id = store.add_file(model_);
+  ASSERT_TRUE(id);
+  for (int n = 0; n < 5000 && json::parse(*store.status_json(*id))["check"]["state"] != "running";
+       ++n) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ASSERT_EQ(json::parse(*store.status_json(*id))["check"]["state"], "running");
+  ASSERT_TRUE(store.slice(*id, "{}"));  // the job's own first slice
+  const auto second = store.slice(*id, R"({"layers":1})");
+  ASSERT_TRUE(second);
+  ASSERT_NE(*second, *id);
+  // The running check is the first job's: the new job queues its own, with nothing copied.
+  const std::string state = json::parse(*store.status_json(*second))["check"]["state"];
+  EXPECT_TRUE(state == "queued" || state == "running") << state;
+  EXPECT_FALSE(fs::exists(root_ / *second / "check.json"));
+  store.cancel(*id);
+  store.cancel(*second);
+  EXPECT_EQ(wait_for(store, *second, "check")["check"]["state"], "cancelled");
 }
 
 TEST_F(JobStoreTest, OnlyTheDownloadsAJobHasAreOffered) {
@@ -229,6 +290,7 @@ TEST_F(JobStoreTest, AnEarlierSessionsJobsAreReadBackWhenSound) {
                       {"check", {{"state", "done"}, {"result", {{"verdict", "printable"}}}}},
                       {"slice", {{"state", "running"}, {"done", 3}, {"total", 9}}},
                       {"validate", 7}};
+  // 00000a: a validation the last session had queued.
   job("000001", sound);
   job("000002", nullptr);  // no job.json
   job("000003", nullptr);
@@ -239,7 +301,7 @@ TEST_F(JobStoreTest, AnEarlierSessionsJobsAreReadBackWhenSound) {
   job("000007", {{"name", "sub/part.stl"}});                    // a path, not a name
   job("000008", {{"name", "part.stl"}}, /*with_model=*/false);  // its model is gone
   job("notes", {{"name", "part.stl"}});                         // not a job id
-  job("00000a", {{"name", "part.stl"}, {"options", "fast"}});
+  job("00000a", {{"name", "part.stl"}, {"options", "fast"}, {"validate", {{"state", "queued"}}}});
 
   JobStore store(root_, tasks_.runner());
   const json list = json::parse(store.list_json())["jobs"];
@@ -257,7 +319,9 @@ TEST_F(JobStoreTest, AnEarlierSessionsJobsAreReadBackWhenSound) {
   EXPECT_EQ(first["slice"]["done"], 3);
   EXPECT_EQ(json::parse(test::read_file(root_ / "000001" / "job.json"))["slice"]["state"],
             "failed");
-  EXPECT_EQ(json::parse(*store.status_json("00000a"))["options"], nullptr);
+  const json tenth = json::parse(*store.status_json("00000a"));
+  EXPECT_EQ(tenth["options"], nullptr);
+  EXPECT_EQ(tenth["validate"]["state"], "failed");
   // New jobs take ids after the highest one read.
   auto next = store.add_file(model_);
   ASSERT_TRUE(next);
