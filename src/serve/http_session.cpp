@@ -106,15 +106,14 @@ class Session : public std::enable_shared_from_this<Session> {
   }
 
   void on_upload(beast::error_code ec) {
-    upload_->get().body().file().close(ec);
+    beast::error_code closed;
+    upload_->get().body().file().close(closed);
     const std::string id = upload_id_;
     upload_id_.clear();
-    if (ec == http::error::body_limit) {
+    if (ec || closed) {
+      // The client went away or the file could not be completed: nothing is kept. (The body
+      // cannot pass the limit: its Content-Length was checked against it.)
       context_.store.discard(id);
-      return reply(too_large(), true);
-    }
-    if (ec) {
-      context_.store.discard(id);  // the client went away: nothing is kept
       return close();
     }
     context_.store.commit(id);

@@ -121,9 +121,10 @@ Result<std::string> check_upload_name(std::string_view raw) {
   }
   std::string_view bare = name;
   if (lower_ends_with(bare, ".gz")) bare.remove_suffix(3);
+  // Something precedes the extension: the name does not start with '.'.
   const bool model = lower_ends_with(bare, ".stl") || lower_ends_with(bare, ".obj") ||
                      lower_ends_with(bare, ".off") || lower_ends_with(bare, ".ply");
-  if (!model || bare.size() <= 4) {
+  if (!model) {
     return Error{ErrorCode::BadInput,
                  "not a model file name: strata reads .stl, .obj, .off and .ply files, and .gz of "
                  "one",

@@ -51,10 +51,8 @@ LayerContours FastKernel::outline_layer(LayerContours chained,
                                         std::uint32_t k) const {
   // Issue 3: loops that cross, touch, stay open or nest without alternating are not boundaries
   // of the filled region; the exact path's outline of that region replaces them, so both paths
-  // give the same contours. Only nonzero and evenodd have an arrangement outline.
-  if (options_.fill_rule != FillRule::NonZero && options_.fill_rule != FillRule::EvenOdd) {
-    return chained;
-  }
+  // give the same contours. The fill rule is nonzero or evenodd (see the class), the two that
+  // have an arrangement outline.
   LayerContours out;
   try {
     out = exact::outline_contours(mesh_, candidates, grid_, k, options_.fill_rule);

@@ -12,6 +12,7 @@ namespace strata::detail {
 
 /// The fast path: double crossing points for output, exact filtered predicates for every
 /// decision, facets swept through the layers by their first layer (O(n + k + m)).
+/// @pre options.fill_rule is NonZero or EvenOdd: slice_model gives Winding to WindingKernel.
 class FastKernel final : public LayerKernel {
  public:
   FastKernel(const IndexedMesh& mesh, const GridSpec& grid, const SliceOptions& options);

@@ -57,5 +57,12 @@ TEST(CancelSink, LetsARunThroughWhenNotRaised) {
   EXPECT_FALSE(is_cancelled(Error{ErrorCode::Internal, "cancelled", "somewhere"}));
 }
 
+TEST(IsCancelled, KnowsTheErrorOfACancelSinkAlone) {
+  EXPECT_TRUE(is_cancelled(Error{ErrorCode::Internal, kCancelledMessage, {}}));
+  EXPECT_FALSE(is_cancelled(Error{ErrorCode::BadInput, kCancelledMessage, {}}));
+  EXPECT_FALSE(is_cancelled(Error{ErrorCode::Internal, "canceled", {}}));
+  EXPECT_FALSE(is_cancelled(Error{ErrorCode::Internal, kCancelledMessage, "out.cells"}));
+}
+
 }  // namespace
 }  // namespace strata

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <functional>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -58,6 +60,66 @@ class ThrowingSink final : public LayerSink {
   std::uint32_t failing_layer_;
 };
 
+/// Empty layers, each with the contours `contours_of(k)` gives; counts its layers.
+class ScriptedKernel final : public LayerKernel {
+ public:
+  ScriptedKernel(const GridSpec& grid, std::function<LayerContours(std::uint32_t)> contours_of)
+      : grid_(grid), contours_of_(std::move(contours_of)) {}
+
+  void prepare_batch(std::uint32_t, std::uint32_t) override {}
+  LayerGeometry compute_layer(std::uint32_t k) const override {
+    ++computed;
+    LayerGeometry g;
+    g.fill.layer = k;
+    g.fill.solid.assign(grid_.cells_per_layer(), 0);
+    g.contours = contours_of_(k);
+    return g;
+  }
+  std::string_view name() const override { return "scripted kernel"; }
+
+  mutable std::atomic<int> computed{0};
+
+ private:
+  GridSpec grid_;
+  std::function<LayerContours(std::uint32_t)> contours_of_;
+};
+
+/// A kernel that keeps the default name and fails on every layer.
+class UnnamedKernel final : public LayerKernel {
+ public:
+  void prepare_batch(std::uint32_t, std::uint32_t) override {}
+  LayerGeometry compute_layer(std::uint32_t) const override {
+    throw std::runtime_error("no geometry");
+  }
+};
+
+/// Accepts everything, except that begin or finish return `error`.
+class RefusingSink final : public LayerSink {
+ public:
+  enum class Step { Begin, Finish };
+  RefusingSink(Step step, Error error) : step_(step), error_(std::move(error)) {}
+  Result<void> begin(const SliceRunInfo&) override {
+    if (step_ == Step::Begin) return error_;
+    return {};
+  }
+  Result<void> add_layer(const LayerResult&) override {
+    ++layers;
+    return {};
+  }
+  Result<void> finish() override {
+    if (step_ == Step::Finish) return error_;
+    return {};
+  }
+  void abort() noexcept override { aborted = true; }
+
+  int layers = 0;
+  bool aborted = false;
+
+ private:
+  Step step_;
+  Error error_;
+};
+
 SliceOptions unit_cells() {
   SliceOptions o;
   o.grid = GridOptions{1.0, 1.0, 1.0, std::nullopt};
@@ -109,6 +171,124 @@ TEST(SliceModel, ASinkThatThrowsIsAnInternalErrorAndEverySinkIsAborted) {
   EXPECT_TRUE(collecting.aborted);
   EXPECT_TRUE(throwing.aborted);
   EXPECT_FALSE(collecting.finished);
+}
+
+TEST(RunSlice, ASinkThatCannotBeginStopsTheRunBeforeAnyLayer) {
+  const BoxRun s;
+  ScriptedKernel kernel(s.grid, [](std::uint32_t) { return LayerContours{}; });
+  testing::CollectingSink collecting;
+  RefusingSink refusing(RefusingSink::Step::Begin,
+                        Error{ErrorCode::BadInput, "cannot write here", "out/box.cells"});
+  LayerSink* sinks[] = {&collecting, &refusing};
+  const auto r = run_slice(s.mesh, s.grid, s.options, kernel, sinks);
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().to_string(), "out/box.cells: cannot write here");
+  EXPECT_EQ(kernel.computed.load(), 0);
+  EXPECT_TRUE(collecting.layers.empty());
+  EXPECT_TRUE(collecting.aborted);
+  EXPECT_TRUE(refusing.aborted);
+}
+
+TEST(RunSlice, ASinkThatCannotFinishAbortsEverySink) {
+  const BoxRun s;
+  ScriptedKernel kernel(s.grid, [](std::uint32_t) { return LayerContours{}; });
+  testing::CollectingSink collecting;
+  RefusingSink refusing(RefusingSink::Step::Finish,
+                        Error{ErrorCode::BadInput, "disk full", "out/box.png"});
+  LayerSink* sinks[] = {&collecting, &refusing};
+  const auto r = run_slice(s.mesh, s.grid, s.options, kernel, sinks);
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().to_string(), "out/box.png: disk full");
+  EXPECT_EQ(collecting.layers.size(), s.grid.nz);  // every layer was handed on first
+  EXPECT_EQ(refusing.layers, static_cast<int>(s.grid.nz));
+  EXPECT_TRUE(collecting.finished);  // finished before the other failed, and aborted after
+  EXPECT_TRUE(collecting.aborted);
+  EXPECT_TRUE(refusing.aborted);
+}
+
+TEST(RunSlice, AKernelWithoutANameIsCalledLayerKernelInItsFailure) {
+  const BoxRun s;
+  UnnamedKernel kernel;
+  testing::CollectingSink sink;
+  LayerSink* sinks[] = {&sink};
+  const auto r = run_slice(s.mesh, s.grid, s.options, kernel, sinks);
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().message, "layer kernel failed: no geometry");
+  EXPECT_TRUE(sink.aborted);
+}
+
+/// `count` open chains of one segment each, from (k, n) to (k, n + 1).
+LayerContours open_chains(std::uint32_t k, std::uint32_t count) {
+  LayerContours c;
+  c.layer = k;
+  for (std::uint32_t n = 0; n < count; ++n) {
+    Contour open;
+    open.points = {{double(k), double(n)}, {double(k), double(n + 1)}};
+    c.loops.push_back(open);
+  }
+  c.open_chains = count;
+  return c;
+}
+
+TEST(RunSlice, OpenChainsAreAllCountedAndTheFirstThousandReported) {
+  const BoxRun s;
+  ASSERT_EQ(s.grid.nz, 12u);
+  ScriptedKernel kernel(s.grid, [](std::uint32_t k) { return open_chains(k, 100); });
+  testing::CollectingSink sink;
+  LayerSink* sinks[] = {&sink};
+  const auto r = run_slice(s.mesh, s.grid, s.options, kernel, sinks);
+  ASSERT_TRUE(r.has_value()) << r.error().to_string();
+  EXPECT_EQ(r->open_chains, 1200u);
+  EXPECT_EQ(r->layers[11].open_chains, 100u);
+  ASSERT_EQ(r->open_chain_reports.size(), 1000u);
+  const OpenChainReport& last = r->open_chain_reports.back();  // layer 9's last chain
+  EXPECT_EQ(last.layer, 9u);
+  EXPECT_EQ(last.start, (Point2{9.0, 99.0}));
+  EXPECT_EQ(last.end, (Point2{9.0, 100.0}));
+  EXPECT_EQ(last.segments, 1u);
+}
+
+TEST(RunSlice, LoopDiagnosticsNameTheFirstLayersAndWhatTheContoursAre) {
+  const BoxRun s;
+  // Loops cross in layers 1 to 7, outlined in 2 and 3 only; they nest wrongly in layer 9, not
+  // outlined; and in layer 10 they both cross and nest wrongly, outlined.
+  ScriptedKernel kernel(s.grid, [](std::uint32_t k) {
+    LayerContours c;
+    c.layer = k;
+    c.loops_cross = (k >= 1 && k <= 7) || k == 10;
+    c.misnested = k == 9 || k == 10;
+    c.outline = k == 2 || k == 3 || k == 10;
+    return c;
+  });
+  testing::CollectingSink sink;
+  LayerSink* sinks[] = {&sink};
+  const auto r = run_slice(s.mesh, s.grid, s.options, kernel, sinks);
+  ASSERT_TRUE(r.has_value()) << r.error().to_string();
+  EXPECT_EQ(r->crossing_loop_layers, 8u);
+  EXPECT_EQ(r->misnested_layers, 2u);
+  EXPECT_EQ(r->outline_layers, 3u);
+  ASSERT_EQ(r->diagnostics.size(), 2u);
+  EXPECT_EQ(r->diagnostics[0].code, "contours.loops_cross");
+  EXPECT_EQ(r->diagnostics[0].message,
+            "loops cross or touch each other in 8 layers (first: 1, 2, 3, 4, 5, ...): contours "
+            "are the outline of the filled region in 3 of them");
+  EXPECT_EQ(r->diagnostics[1].code, "contours.loops_misnested");
+  EXPECT_EQ(r->diagnostics[1].message,
+            "nested loops do not alternate in orientation in 2 layers (first: 9, 10): contours "
+            "are the outline of the filled region in 1 of them");
+
+  // Misnested in layer 4 alone, not outlined: the chained loops are the contours.
+  ScriptedKernel chained(s.grid, [](std::uint32_t k) {
+    LayerContours c;
+    c.misnested = k == 4;
+    return c;
+  });
+  const auto only = run_slice(s.mesh, s.grid, s.options, chained, sinks);
+  ASSERT_TRUE(only.has_value());
+  ASSERT_EQ(only->diagnostics.size(), 1u);
+  EXPECT_EQ(only->diagnostics[0].message,
+            "nested loops do not alternate in orientation in 1 layers (first: 4): contours are "
+            "the chained loops");
 }
 
 }  // namespace

@@ -54,6 +54,15 @@ TEST(MatchRoute, AnswersNothingElse) {
   EXPECT_EQ(match_route("GET", "/api/jobs/0001/slice").kind, RouteKind::WrongMethod);
   EXPECT_EQ(match_route("POST", "/").kind, RouteKind::WrongMethod);
   EXPECT_EQ(match_route("GET", "/viewer?job=../x").kind, RouteKind::BadRequest);
+  EXPECT_EQ(match_route("GET", "/viewer?job").kind, RouteKind::BadRequest);
+  EXPECT_EQ(match_route("GET", "/viewer?other=1&job=00a1").job, "00a1");
+  EXPECT_EQ(match_route("GET", "/api/files/0001").kind, RouteKind::NotFound);
+  EXPECT_EQ(match_route("GET", "/api/jobs/0001/downloads/cells").kind, RouteKind::NotFound);
+}
+
+TEST(MatchRoute, RefusesAnEmptyTargetAndANulInThePath) {
+  EXPECT_EQ(match_route("GET", "").reason, "the request target is not a path");
+  EXPECT_EQ(match_route("GET", std::string_view("/api\0/info", 10)).reason, "the path is refused");
 }
 
 TEST(IsJobId, OneToSixteenLowercaseHexDigits) {
@@ -67,13 +76,24 @@ TEST(IsJobId, OneToSixteenLowercaseHexDigits) {
 
 TEST(PercentDecode, DecodesEscapesAndPlus) {
   EXPECT_EQ(*percent_decode("a%20b+c%2F"), "a b c/");
+  EXPECT_EQ(*percent_decode("%7e%7E%41%5a"), "~~AZ");
   EXPECT_FALSE(percent_decode("a%2"));
-  EXPECT_FALSE(percent_decode("%g0"));
+  // A digit beside each end of the ranges 0-9, a-f and A-F, in either place.
+  for (const char* bad : {"%g0", "%0g", "%/0", "%:0", "%`0", "%G0", "%@0"}) {
+    const auto decoded = percent_decode(bad);
+    ASSERT_FALSE(decoded) << bad;
+    EXPECT_EQ(decoded.error().message, "a malformed %-escape") << bad;
+  }
 }
 
 TEST(CheckUploadName, KeepsModelNamesOnly) {
   EXPECT_EQ(*check_upload_name("part.STL"), "part.STL");
   EXPECT_EQ(*check_upload_name("C:\\models\\part (2).ply.gz"), "part (2).ply.gz");
+  for (const char* name : {"my_part-2.obj", "a.off", "B.PLY", "c.Stl.GZ"}) {
+    EXPECT_EQ(*check_upload_name(name), name);
+  }
+  EXPECT_FALSE(check_upload_name("ab"));
+  EXPECT_FALSE(check_upload_name("part.gz"));
   EXPECT_FALSE(check_upload_name(""));
   EXPECT_FALSE(check_upload_name(".stl"));
   EXPECT_FALSE(check_upload_name(".hidden.stl"));
@@ -86,6 +106,9 @@ TEST(CheckUploadName, KeepsModelNamesOnly) {
 TEST(StemOf, DropsTheModelExtensions) {
   EXPECT_EQ(stem_of("part.stl.gz"), "part");
   EXPECT_EQ(stem_of("a.b.obj"), "a.b");
+  EXPECT_EQ(stem_of("part"), "part");
+  EXPECT_EQ(stem_of(".stl"), ".stl");  // a leading dot is not an extension
+  EXPECT_EQ(stem_of(".gz"), "model");  // nothing left: a name all the same
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include "../pipeline/collecting_sink_for_tests.hpp"
 #include "../slice/box_mesh_for_tests.hpp"
+#include "strata/pipeline/cancel_sink.hpp"
 
 namespace strata {
 namespace {
@@ -124,6 +125,22 @@ TEST(SliceModel, WindingRuleFillsABoxWithAMissingSideAsTheClosedBox) {
   // Under nonzero the open box loses the rows the missing side should have closed.
   const Sliced wrong = slice_with(open, nonzero);
   EXPECT_NE(wrong.sink.layers, expected.sink.layers);
+}
+
+TEST(SliceModel, ACancelledWindingRunReturnsTheCancelAndNoDiagnostics) {
+  const IndexedMesh box = testing::indexed_box({0, 0, 0}, {4, 4, 4});
+  SliceOptions winding = unit_cells(ShellMode::Distance, 0.5);
+  winding.fill_rule = FillRule::Winding;
+  const GridSpec grid = make_grid(box.bounds(), winding.grid).value();
+  const std::atomic<bool> cancelled{true};
+  CancelSink stop(cancelled);
+  testing::CollectingSink sink;
+  LayerSink* sinks[] = {&sink, &stop};
+  const auto r = slice_model(box, grid, winding, sinks);
+  ASSERT_FALSE(r.has_value());
+  EXPECT_TRUE(is_cancelled(r.error()));
+  EXPECT_TRUE(sink.aborted);
+  EXPECT_TRUE(sink.layers.empty());
 }
 
 }  // namespace
