@@ -34,6 +34,8 @@ class BinaryCellsWriter final : public detail::SingleFileSink {
     const GridSpec& g = run().grid;
     std::string header;
     header.reserve(kCellsHeaderBytes);
+    // The layout: magic, four 32-bit counts (header size, nx, ny, nz), seven doubles.
+    static_assert(kCellsMagic.size() + 4 * 4 + 7 * 8 == kCellsHeaderBytes, "cells header layout");
     header.append(kCellsMagic);
     detail::put_u32_le(header, kCellsHeaderBytes);
     detail::put_u32_le(header, g.nx);
@@ -42,7 +44,6 @@ class BinaryCellsWriter final : public detail::SingleFileSink {
     for (double v : {g.x0, g.y0, g.z0, g.dx, g.dy, g.dz, run().options.shell_mm}) {
       detail::put_f64_le(header, v);
     }
-    STRATA_ASSERT(header.size() == kCellsHeaderBytes, "cells header layout");
     out.write(header);
     return {};
   }

@@ -54,7 +54,6 @@ class SinkProgress {
   const GridSpec& grid() const { return run_.grid; }
   State state() const { return state_; }
   void set_state(State state) { state_ = state; }
-  std::uint32_t next_layer() const { return next_layer_; }
 
  private:
   SliceRunInfo run_;

@@ -6,6 +6,17 @@
 
 namespace strata::io::detail {
 
+bool DiagnosticTally::count_again(std::string_view code, std::size_t where) {
+  for (auto& entry : entries_) {
+    if (entry.code == code) {
+      ++entry.count;
+      if (entry.more.size() < kMaxPlaces) entry.more.push_back(where);
+      return true;
+    }
+  }
+  return false;
+}
+
 void DiagnosticTally::flush_into(Diagnostics& out) const {
   for (const auto& entry : entries_) {
     std::string message = entry.message;

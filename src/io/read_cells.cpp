@@ -165,7 +165,6 @@ class LineReader {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     return true;
   }
-  std::uint64_t line_no() const { return line_no_; }
   std::string here() const { return fmt::format("{}:{}", name_, line_no_); }
   std::string after_last() const { return fmt::format("{}:{}", name_, line_no_ + 1); }
 

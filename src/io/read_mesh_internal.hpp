@@ -42,13 +42,7 @@ class DiagnosticTally {
   template <class MakeMessage>
   void add(std::string_view code, Severity severity, std::size_t where,
            MakeMessage&& make_message) {
-    for (auto& entry : entries_) {
-      if (entry.code == code) {
-        ++entry.count;
-        if (entry.more.size() < kMaxPlaces) entry.more.push_back(where);
-        return;
-      }
-    }
+    if (count_again(code, where)) return;
     entries_.push_back(Entry{std::string(code), severity, make_message(), 1, {}});
   }
 
@@ -56,6 +50,10 @@ class DiagnosticTally {
   void flush_into(Diagnostics& out) const;
 
  private:
+  /// Counts one more occurrence at `where` when `code` was seen before; false for a new code.
+  /// Kept out of the template so the search is one function, not one for each message maker.
+  bool count_again(std::string_view code, std::size_t where);
+
   static constexpr std::size_t kMaxPlaces = 8;
   struct Entry {
     std::string code;

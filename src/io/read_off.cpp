@@ -106,10 +106,9 @@ struct OffKeyword {
   bool dimension = false;    ///< nOFF: the dimension comes before the counts
 };
 
-std::optional<OffKeyword> parse_keyword(std::string_view word) {
-  if (word.size() < 3 || word.substr(word.size() - 3) != "OFF") return std::nullopt;
+/// The flags of a keyword from what precedes its "OFF" (`prefix`); nullopt when they are none.
+std::optional<OffKeyword> parse_keyword_prefix(std::string_view prefix) {
   OffKeyword keyword;
-  std::string_view prefix = word.substr(0, word.size() - 3);
   if (!prefix.empty() && prefix.back() == 'n') {
     keyword.dimension = true;
     prefix.remove_suffix(1);
@@ -157,8 +156,8 @@ Result<TriangleSoup> read_off_bytes(std::string_view bytes, std::string_view nam
   {
     std::size_t split = word.find("OFF");
     if (split != std::string_view::npos) {
+      const auto parsed = parse_keyword_prefix(word.substr(0, split));
       split += 3;
-      const auto parsed = parse_keyword(word.substr(0, split));
       if (!parsed) return error(fmt::format("unknown OFF keyword '{}'", shown(word)));
       keyword = *parsed;
       if (split < word.size()) {

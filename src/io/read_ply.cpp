@@ -50,7 +50,7 @@ std::size_t size_of(PlyType type) {
     case PlyType::Float32:
       return 4;
     case PlyType::Float64:
-      return 8;
+      break;
   }
   return 8;
 }

@@ -6,12 +6,12 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "io/little_endian.hpp"
 #include "io/read_mesh_internal.hpp"
 #include "io/stl_format_internal.hpp"
 #include "strata/io/read_mesh.hpp"
@@ -63,12 +63,7 @@ std::string quote(std::string_view text) {
 // Binary
 
 float load_float32_le(const char* p) {
-  std::uint32_t bits = 0;
-  std::memcpy(&bits, p, sizeof bits);
-  if constexpr (std::endian::native == std::endian::big) {
-    bits = (bits >> 24) | ((bits >> 8) & 0xff00u) | ((bits << 8) & 0xff0000u) | (bits << 24);
-  }
-  return std::bit_cast<float>(bits);
+  return std::bit_cast<float>(detail::get_u32_le(reinterpret_cast<const unsigned char*>(p)));
 }
 
 Result<TriangleSoup> read_stl_binary(std::string_view bytes, std::string_view name,
@@ -282,7 +277,9 @@ void AsciiStlParser::begin_facet(std::string_view rest) {
   }
   if (!ok) {
     tally_.add("stl.bad_normal", Severity::Warning, line_number_, [&] {
-      return values.empty() || word.empty()
+      // Without values there is no word either: `values` is all of the line after `facet`
+      // when it does not start with `normal`.
+      return values.empty()
                  ? fmt::format("{}: facet has no stored normal values; the facet is kept",
                                line_location(name_, line_number_))
                  : fmt::format(
@@ -504,11 +501,8 @@ namespace detail {
 StlBinaryLayout stl_binary_layout(std::string_view bytes) {
   StlBinaryLayout layout;
   if (bytes.size() < kStlBinaryHeaderBytes) return layout;
-  std::uint32_t count = 0;
-  std::memcpy(&count, bytes.data() + 80, sizeof count);
-  if constexpr (std::endian::native == std::endian::big) {
-    count = (count >> 24) | ((count >> 8) & 0xff00u) | ((count << 8) & 0xff0000u) | (count << 24);
-  }
+  const std::uint32_t count =
+      detail::get_u32_le(reinterpret_cast<const unsigned char*>(bytes.data() + 80));
   layout.declared_facets = count;
   layout.expected_bytes =
       kStlBinaryHeaderBytes + std::uint64_t{kStlBinaryFacetBytes} * std::uint64_t{count};

@@ -172,6 +172,60 @@ TEST(CellsWriter, ReservedCodeIsAnInternalError) {
   EXPECT_NE(added.error().message.find("row 1 cell 2"), std::string::npos) << added.error().message;
 }
 
+TEST(CellsWriter, CodesAboveThreeAreInternalErrorsInBothEncodings) {
+  for (const CellsEncoding encoding : {CellsEncoding::Binary, CellsEncoding::Ascii}) {
+    ScratchDir dir;
+    auto sink = make_cells_writer(dir / "part.cells", encoding);
+    auto layers = small_layers();
+    layers[0].cells[11] = code(4);
+    ASSERT_TRUE(sink->begin(small_run()));
+    auto added = sink->add_layer(layers[0].result());
+    ASSERT_FALSE(added);
+    EXPECT_EQ(added.error().code, ErrorCode::Internal);
+    EXPECT_EQ(added.error().message,
+              "cells writer: layer 0 row 2 cell 1 has the code 4, which is not 00, 01 or 11");
+  }
+}
+
+TEST(CellsWriter, AsciiReservedCodeIsAnInternalError) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells.txt", CellsEncoding::Ascii);
+  auto layers = small_layers();
+  layers[1].cells[9] = code(2);
+  ASSERT_TRUE(sink->begin(small_run()));
+  ASSERT_TRUE(sink->add_layer(layers[0].result()));
+  auto added = sink->add_layer(layers[1].result());
+  ASSERT_FALSE(added);
+  EXPECT_EQ(added.error().code, ErrorCode::Internal);
+  EXPECT_EQ(added.error().message,
+            "cells writer: layer 1 row 1 cell 4 has the code 2, which is not 00, 01 or 11");
+  sink->abort();
+  EXPECT_TRUE(list_tree(dir.path()).empty());
+}
+
+TEST(CellsWriter, ALayerOfManyChunksReadsBackCellForCell) {
+  // 700 x 500 cells pack into 87,500 bytes, more than the 64 KiB handed to the file at once.
+  ScratchDir dir;
+  SliceRunInfo run = flat_run(700, 500);
+  run.grid.nz = 2;
+  std::vector<LayerData> layers(2);
+  for (std::uint32_t k = 0; k < 2; ++k) {
+    layers[k].layer = k;
+    for (std::uint32_t idx = 0; idx < 700 * 500; ++idx) {
+      const std::uint32_t value = (idx * 7 + k) % 3;
+      layers[k].cells.push_back(code(value == 2 ? 3 : static_cast<int>(value)));
+    }
+  }
+  auto sink = make_cells_writer(dir / "big.cells");
+  ASSERT_TRUE(run_sink(*sink, run, layers));
+  EXPECT_EQ(std::filesystem::file_size(dir / "big.cells"), kCellsHeaderBytes + 2 * 87500u);
+  const auto read = read_cells(dir / "big.cells");
+  ASSERT_TRUE(read) << read.error().to_string();
+  std::vector<CellClass> expected = layers[0].cells;
+  expected.insert(expected.end(), layers[1].cells.begin(), layers[1].cells.end());
+  EXPECT_EQ(read->cells, expected);
+}
+
 TEST(CellsWriter, FinishBeforeAllLayersFailsAndWritesNothing) {
   ScratchDir dir;
   auto sink = make_cells_writer(dir / "part.cells");

@@ -153,6 +153,57 @@ TEST(CliWriter, EmptyModelStillHasEveryLayer) {
   EXPECT_EQ(count_of(text, "$$HATCHES/"), 0u);
 }
 
+TEST(CliWriter, AClosedLoopOfTheOpenKindIsWrittenAsAnOpenPolyline) {
+  ScratchDir dir;
+  auto layers = small_layers();
+  Contour chain = loop({{0, 2.5}, {0.5, 2.5}, {0.5, 3}}, LoopKind::Open);
+  chain.is_closed = true;  // the kind decides: an open chain never gets its first point repeated
+  layers[0].contours.loops.push_back(chain);
+  auto sink = make_cli_writer(dir / "part.cli", CliEncoding::Ascii);
+  ASSERT_TRUE(run_sink(*sink, small_run(), layers));
+  const auto polylines = commands(read_file_bytes(dir / "part.cli"), "POLYLINE");
+  ASSERT_EQ(polylines.size(), 1u);
+  EXPECT_EQ(polylines[0],
+            (std::vector<std::string>{"1", "2", "3", "0", "2.5", "0.5", "2.5", "0.5", "3"}));
+}
+
+TEST(CliWriter, LineBreaksInTheModelNameBecomeSpacesInTheLabel) {
+  ScratchDir dir;
+  SliceRunInfo run = small_run();
+  run.model_name = "two\nlines\rand CR";
+  const std::string text = write_cli(dir, CliEncoding::Ascii, run);
+  EXPECT_EQ(commands(text, "LABEL"),
+            (std::vector<std::vector<std::string>>{{"1", "two lines and CR"}}));
+}
+
+/// A closed square of `n` points around the grid's area, all distinct.
+Contour long_loop(std::size_t n) {
+  std::vector<Point2> points;
+  for (std::size_t p = 0; p < n; ++p) points.push_back({-1.0 + 1e-4 * static_cast<double>(p), 2.5});
+  return loop(std::move(points), LoopKind::Outer);
+}
+
+TEST(CliWriter, AsciiLayersLongerThanTheWriteBufferAreWhole) {
+  // 20000 points and 5000 hatches write several times the 64 KiB the writer hands on at once.
+  ScratchDir dir;
+  auto layers = small_layers();
+  layers[0].contours.loops.push_back(long_loop(20000));
+  for (int h = 0; h < 5000; ++h) layers[0].hatches.push_back({1, -1.0, 0.5});
+  auto sink = make_cli_writer(dir / "part.cli", CliEncoding::Ascii);
+  ASSERT_TRUE(run_sink(*sink, small_run(), layers));
+  const std::string text = read_file_bytes(dir / "part.cli");
+  const auto polylines = commands(text, "POLYLINE");
+  ASSERT_EQ(polylines.size(), 1u);
+  ASSERT_EQ(polylines[0].size(), 3 + 2 * 20001u);
+  EXPECT_EQ(polylines[0][2], "20001");
+  EXPECT_EQ(polylines[0][3 + 2 * 12345], fmt::format("{}", -1.0 + 1e-4 * 12345));
+  EXPECT_EQ(polylines[0][3 + 2 * 20000], "-1");  // closed: the first point again
+  const auto hatches = commands(text, "HATCHES");
+  ASSERT_EQ(hatches.size(), 1u);
+  EXPECT_EQ(hatches[0].size(), 2 + 4 * 5000u);
+  EXPECT_EQ(text.substr(text.size() - 14), "$$GEOMETRYEND\n");
+}
+
 // ------------------------------------------------------------------------------------ binary
 
 struct BinaryReader {
@@ -267,6 +318,23 @@ TEST(CliWriter, NoFileUnderTheFinalNameBeforeFinish) {
   EXPECT_FALSE(std::filesystem::exists(dir / "part.cli"));
   ASSERT_TRUE(sink->finish());
   EXPECT_EQ(list_tree(dir.path()), std::vector<std::string>{"part.cli"});
+}
+
+TEST(CliWriter, BinaryLayersLongerThanTheWriteBufferAreWhole) {
+  ScratchDir dir;
+  auto layers = small_layers();
+  layers[0].contours.loops.push_back(long_loop(20000));
+  for (int h = 0; h < 5000; ++h) layers[0].hatches.push_back({1, -1.0, 0.5});
+  auto sink = make_cli_writer(dir / "part.cli", CliEncoding::Binary);
+  ASSERT_TRUE(run_sink(*sink, small_run(), layers));
+  const std::string file = read_file_bytes(dir / "part.cli");
+  const std::size_t start = file.find("$$HEADEREND") + 11;
+  // layer (2 + 4), polyline (2 + 12 + 8 a point), hatches (2 + 8 + 16 a segment), layer (2 + 4).
+  EXPECT_EQ(file.size() - start, 6 + (14 + 8 * 20001) + (10 + 16 * 5000) + 6);
+  BinaryReader in{file, start + 6 + 14 + 8 * 20000};
+  EXPECT_EQ(in.f32(), -1.0f);  // the closing point, after the buffer was handed on
+  EXPECT_EQ(in.f32(), 2.5f);
+  EXPECT_EQ(in.u16(), kCliHatchesLong);
 }
 
 }  // namespace

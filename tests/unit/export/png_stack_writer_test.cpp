@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "export_test_support.hpp"
@@ -180,6 +181,43 @@ TEST(PngStackWriter, WrongCellCountIsAnInternalError) {
   auto added = sink->add_layer(layers[0].result());
   ASSERT_FALSE(added);
   EXPECT_EQ(added.error().code, ErrorCode::Internal);
+  sink->abort();
+  EXPECT_TRUE(list_tree(dir.path()).empty());
+}
+
+TEST(PngStackWriter, NoPixelPitchWhenACellSizeDoesNotFitThePngChunk) {
+  // The pHYs chunk holds whole pixels per metre in 32 bits: a 5 m cell rounds to 0 of them, a
+  // 1e-7 mm cell needs 10^10. Both axes are then left without a pitch.
+  for (const auto& [dx, dy] : {std::pair{5000.0, 0.25}, std::pair{0.5, 1e-7}}) {
+    ScratchDir dir;
+    SliceRunInfo run = small_run();
+    run.grid.dx = dx;
+    run.grid.dy = dy;
+    auto sink = make_png_stack_writer(dir.path(), "part");
+    ASSERT_TRUE(run_sink(*sink, run, small_layers()));
+    const std::string file = read_file_bytes(dir / "png/part_00000.png");
+    EXPECT_EQ(file.find("pHYs"), std::string::npos) << dx << " x " << dy;
+    const GreyImage image = decode_png(dir / "png/part_00000.png");
+    EXPECT_EQ(image.width, 5u);
+    EXPECT_EQ(image.height, 3u);
+  }
+}
+
+TEST(PngStackWriter, AnImageLibpngRefusesIsAnInternalErrorNamingTheLayerFile) {
+  // A grid without columns has layers of zero cells, which the sink contract allows but PNG
+  // does not (IHDR needs a width of at least 1): libpng's error comes back as the layer's error.
+  ScratchDir dir;
+  SliceRunInfo run = small_run();
+  run.grid.nx = 0;
+  auto sink = make_png_stack_writer(dir.path(), "part");
+  ASSERT_TRUE(sink->begin(run));
+  testing::LayerData layer;
+  auto added = sink->add_layer(layer.result());
+  ASSERT_FALSE(added);
+  EXPECT_EQ(added.error().code, ErrorCode::Internal);
+  EXPECT_EQ(added.error().message, "cannot encode the PNG of layer 0: Invalid IHDR data");
+  EXPECT_EQ(added.error().location, (dir / "png/part_00000.png").string());
+  EXPECT_EQ(list_tree(dir.path()), std::vector<std::string>{"png"});  // no temporary left
   sink->abort();
   EXPECT_TRUE(list_tree(dir.path()).empty());
 }

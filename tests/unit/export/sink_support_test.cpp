@@ -10,6 +10,7 @@
 #include "export_test_support.hpp"
 #include "strata/export/cells_writer.hpp"
 #include "strata/export/svg_writer.hpp"
+#include "support/file_size_limit.hpp"
 
 namespace strata::io {
 namespace {
@@ -110,7 +111,7 @@ TEST(SinkContract, FinishRemovesOnlyTheStemsNumberedLayerFilesBeyondTheGrid) {
   ScratchDir dir;
   std::filesystem::create_directories(dir / "svg");
   const std::vector<std::string> kept = {"part_notes.svg", "part_00001.png", "other_00009.svg",
-                                         "part_1.svg", "part_0000x.svg"};
+                                         "part_1.svg",     "part_0000x.svg", "part_000-1.svg"};
   const std::vector<std::string> stale = {"part_00002.svg", "part_00009.svg",
                                           "part_99999999999999999999999.svg"};
   for (const auto& name : kept) write_file_bytes(dir / "svg" / name, "x");
@@ -121,6 +122,84 @@ TEST(SinkContract, FinishRemovesOnlyTheStemsNumberedLayerFilesBeyondTheGrid) {
   for (const auto& name : stale) EXPECT_FALSE(std::filesystem::exists(dir / "svg" / name)) << name;
   EXPECT_TRUE(std::filesystem::exists(dir / "svg" / "part_00000.svg"));
   EXPECT_TRUE(std::filesystem::exists(dir / "svg" / "part_00001.svg"));
+}
+
+TEST(SinkContract, BeginTwiceIsAnInternalErrorForLayerFiles) {
+  ScratchDir dir;
+  auto sink = make_svg_writer(dir.path(), "part");
+  ASSERT_TRUE(sink->begin(small_run()));
+  expect_internal(sink->begin(small_run()), "SVG writer: begin() called twice");
+}
+
+TEST(SinkContract, AnOutputFolderTheSystemRefusesIsBadInputNamingIt) {
+  // A name of 300 bytes is longer than a file system allows for one folder (255).
+  ScratchDir dir;
+  const std::filesystem::path folder = dir / std::string(300, 'f');
+  auto sink = make_cells_writer(folder / "part.cells");
+  const Result<void> r = sink->begin(small_run());
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().code, ErrorCode::BadInput);
+  EXPECT_EQ(r.error().location, folder.string());
+  EXPECT_EQ(r.error().message, "cannot create the output folder: File name too long");
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+TEST(SinkContract, AnOutputFileTheSystemRefusesIsBadInputNamingIt) {
+  ScratchDir dir;
+  const std::filesystem::path file = dir / (std::string(300, 'c') + ".cells");
+  auto sink = make_cells_writer(file);
+  const Result<void> r = sink->begin(small_run());
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().code, ErrorCode::BadInput);
+  EXPECT_EQ(r.error().location, file.string());
+  EXPECT_EQ(r.error().message, "cannot create the file: File name too long");
+}
+
+TEST(SinkContract, AFolderAppearingAtTheTargetBeforeFinishFailsTheRename) {
+  ScratchDir dir;
+  auto sink = make_cells_writer(dir / "part.cells");
+  ASSERT_TRUE(sink->begin(small_run()));
+  for (const auto& layer : small_layers()) ASSERT_TRUE(sink->add_layer(layer.result()));
+  std::filesystem::create_directory(dir / "part.cells");
+  const Result<void> r = sink->finish();
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().code, ErrorCode::BadInput);
+  EXPECT_EQ(r.error().location, (dir / "part.cells").string());
+  EXPECT_EQ(r.error().message, "cannot rename the finished temporary onto it: Is a directory");
+  EXPECT_EQ(testing::list_tree(dir.path()), std::vector<std::string>{"part.cells"});
+}
+
+TEST(SinkContract, AFolderInPlaceOfALayerFileIsBadInput) {
+  ScratchDir dir;
+  std::filesystem::create_directories(dir / "svg" / "part_00001.svg");
+  auto sink = make_svg_writer(dir.path(), "part");
+  ASSERT_TRUE(sink->begin(small_run()));
+  const auto layers = small_layers();
+  ASSERT_TRUE(sink->add_layer(layers[0].result()));
+  const Result<void> r = sink->add_layer(layers[1].result());
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().code, ErrorCode::BadInput);
+  EXPECT_EQ(r.error().location, (dir / "svg" / "part_00001.svg").string());
+  EXPECT_EQ(r.error().message, "cannot write the file: a folder of that name exists");
+  sink->abort();
+  EXPECT_EQ(testing::list_tree(dir.path()),
+            (std::vector<std::string>{"svg", "svg/part_00001.svg"}));
+}
+
+TEST(SinkContract, ALayerFileTheDiskRefusesIsBadInputAndLeavesNoTemporary) {
+  ScratchDir dir;
+  auto sink = make_svg_writer(dir.path(), "part");
+  ASSERT_TRUE(sink->begin(small_run()));
+  Result<void> added;
+  {
+    const test::FileSizeLimit limit(100);  // an SVG layer takes about 1.4 kB
+    added = sink->add_layer(small_layers()[0].result());
+  }
+  ASSERT_FALSE(added.has_value());
+  EXPECT_EQ(added.error().code, ErrorCode::BadInput);
+  EXPECT_EQ(added.error().location, (dir / "svg" / "part_00000.svg").string());
+  EXPECT_EQ(added.error().message, "cannot write the file: File too large");
+  EXPECT_EQ(testing::list_tree(dir.path()), std::vector<std::string>{"svg"});
 }
 
 }  // namespace

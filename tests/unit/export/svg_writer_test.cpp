@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -168,6 +169,56 @@ TEST(SvgWriter, StemWithAFolderSeparatorIsRefused) {
   EXPECT_EQ(begun.error().code, ErrorCode::Usage);
   sink->abort();
   EXPECT_TRUE(list_tree(dir.path()).empty());
+}
+
+TEST(SvgWriter, StemThatIsEmptyIsRefused) {
+  ScratchDir dir;
+  auto sink = make_svg_writer(dir.path(), "");
+  auto begun = sink->begin(small_run());
+  ASSERT_FALSE(begun);
+  EXPECT_EQ(begun.error().code, ErrorCode::Usage);
+  EXPECT_EQ(begun.error().message, "SVG writer: the file stem '' must be a plain, non-empty name");
+  EXPECT_EQ(begun.error().location, (dir / "svg").string());
+}
+
+TEST(SvgWriter, ALoopWithoutPointsIsNotDrawn) {
+  ScratchDir dir;
+  auto layers = small_layers();
+  layers[0].contours.loops.push_back(loop({}, LoopKind::Outer, 0));
+  auto sink = make_svg_writer(dir.path(), "part");
+  ASSERT_TRUE(run_sink(*sink, small_run(), layers));
+  EXPECT_EQ(count_of(read_file_bytes(dir / "svg/part_00000.svg"), "<path "), 0u);
+}
+
+TEST(SvgWriter, AClosedLoopOfTheOpenKindIsDrawnAsAnOpenChain) {
+  ScratchDir dir;
+  auto layers = small_layers();
+  Contour chain = loop({{0, 2.5}, {0.5, 2.5}, {0.5, 3}}, LoopKind::Open, 0);
+  chain.is_closed = true;  // the kind decides
+  layers[0].contours.loops.push_back(chain);
+  auto sink = make_svg_writer(dir.path(), "part");
+  ASSERT_TRUE(run_sink(*sink, small_run(), layers));
+  const std::string svg = read_file_bytes(dir / "svg/part_00000.svg");
+  EXPECT_NE(svg.find("<path class=\"open\" d=\"M 0 -2.5 L 0.5 -2.5 L 0.5 -3\"/>"),
+            std::string::npos)
+      << svg;
+  EXPECT_EQ(count_of(svg, "<circle class=\"open-end\""), 2u);
+}
+
+TEST(SvgWriter, HatchesLongerThanTheWriteBufferAreAllDrawn) {
+  // 6000 segments make a path of about 150 KiB, handed to the file in pieces of 64 KiB.
+  ScratchDir dir;
+  auto layers = small_layers();
+  for (int h = 0; h < 6000; ++h)
+    layers[0].hatches.push_back({static_cast<std::uint32_t>(h % 3), -1.25, 0.75});
+  auto sink = make_svg_writer(dir.path(), "part");
+  ASSERT_TRUE(run_sink(*sink, small_run(), layers));
+  const std::string svg = read_file_bytes(dir / "svg/part_00000.svg");
+  EXPECT_EQ(count_of(svg, "<path class=\"hatch\""), 1u);
+  EXPECT_EQ(count_of(svg, " H 0.75"), 6000u);
+  const double y2 = small_run().grid.yc(2);
+  EXPECT_EQ(count_of(svg, fmt::format("M -1.25 {} H 0.75", -y2)), 2000u);
+  EXPECT_NE(svg.find("H 0.75\"/>\n<text"), std::string::npos);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "../export/export_test_support.hpp"
+#include "support/file_size_limit.hpp"
 
 namespace strata::io {
 namespace {
@@ -105,6 +106,53 @@ TEST(OutputFile, CreateOverFolderFails) {
   auto out = OutputFile::create(dir / "sub");
   ASSERT_FALSE(out);
   EXPECT_EQ(out.error().code, ErrorCode::BadInput);
+}
+
+TEST(OutputFile, APathWithoutAFileNameIsAUsageError) {
+  ScratchDir dir;
+  for (const std::filesystem::path& path : {std::filesystem::path(), dir / ""}) {
+    auto out = OutputFile::create(path);
+    ASSERT_FALSE(out) << path;
+    EXPECT_EQ(out.error().code, ErrorCode::Usage);
+    EXPECT_EQ(out.error().message, "an output file needs a file name");
+    EXPECT_EQ(out.error().location, path.string());
+  }
+  EXPECT_TRUE(list_tree(dir.path()).empty());
+}
+
+TEST(OutputFile, AWriteTheDiskRefusesFailsTheCommitAndLeavesNothing) {
+  // 3 MiB pass the 1 MiB buffer at once, so the refusal comes from fwrite itself.
+  ScratchDir dir;
+  auto out = OutputFile::create(dir / "a.bin");
+  ASSERT_TRUE(out) << out.error().to_string();
+  Result<void> committed;
+  {
+    const test::FileSizeLimit limit(4096);
+    out->write(std::string(3 << 20, 'x'));
+    out->write("more");  // ignored after the failure
+    committed = out->commit();
+  }
+  ASSERT_FALSE(committed);
+  EXPECT_EQ(committed.error().code, ErrorCode::BadInput);
+  EXPECT_EQ(committed.error().location, (dir / "a.bin").string());
+  EXPECT_EQ(committed.error().message, "cannot write the file: File too large");
+  EXPECT_TRUE(list_tree(dir.path()).empty());
+}
+
+TEST(OutputFile, AFlushTheDiskRefusesFailsTheCommitAndLeavesNothing) {
+  // 64 KiB stay in the buffer until the commit flushes them.
+  ScratchDir dir;
+  auto out = OutputFile::create(dir / "a.bin");
+  ASSERT_TRUE(out) << out.error().to_string();
+  Result<void> committed;
+  {
+    const test::FileSizeLimit limit(4096);
+    out->write(std::string(64 << 10, 'x'));
+    committed = out->commit();
+  }
+  ASSERT_FALSE(committed);
+  EXPECT_EQ(committed.error().message, "cannot write the file: File too large");
+  EXPECT_TRUE(list_tree(dir.path()).empty());
 }
 
 TEST(OutputFile, MoveTransfersTheOpenFile) {

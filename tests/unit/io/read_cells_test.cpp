@@ -4,7 +4,9 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -163,19 +165,21 @@ TEST(CellsReader, BothEncodingsSummarizeAlike) {
 }
 
 TEST(CellsReader, LayerVisitorSeesLayersInOrderAndCanStop) {
-  ScratchDir dir;
-  const auto path = write_small(dir, CellsEncoding::Binary);
-  std::vector<std::uint32_t> seen;
-  auto read = read_cells_layers(
-      path,
-      [&](const CellsHeader&, std::uint32_t k, std::span<const CellClass> cells) -> Result<void> {
-        seen.push_back(k);
-        EXPECT_EQ(cells.size(), 15u);
-        return Error{ErrorCode::Usage, "stop", "visitor"};
-      });
-  ASSERT_FALSE(read);
-  EXPECT_EQ(read.error().message, "stop");
-  EXPECT_EQ(seen, std::vector<std::uint32_t>{0});
+  for (const CellsEncoding encoding : {CellsEncoding::Binary, CellsEncoding::Ascii}) {
+    ScratchDir dir;
+    const auto path = write_small(dir, encoding);
+    std::vector<std::uint32_t> seen;
+    auto read = read_cells_layers(
+        path,
+        [&](const CellsHeader&, std::uint32_t k, std::span<const CellClass> cells) -> Result<void> {
+          seen.push_back(k);
+          EXPECT_EQ(cells.size(), 15u);
+          return Error{ErrorCode::Usage, "stop", "visitor"};
+        });
+    ASSERT_FALSE(read);
+    EXPECT_EQ(read.error().message, "stop");
+    EXPECT_EQ(seen, std::vector<std::uint32_t>{0});
+  }
 }
 
 // ---------------------------------------------------------------------------- binary errors
@@ -295,6 +299,15 @@ std::filesystem::path ascii_with_line(const ScratchDir& dir, std::size_t number,
   return path;
 }
 
+TEST(CellsReader, AsciiTabsTrailingBlanksAndBlankLinesBetweenLayersAreAccepted) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 10, " \t\n\nlayer\t1  z=1.625 \t");
+  auto read = read_cells(path);
+  ASSERT_TRUE(read) << read.error().to_string();
+  expect_small_header(read->header);
+  EXPECT_EQ(read->cells, all_small_cells());
+}
+
 TEST(CellsReader, AsciiShortRowNamesTheLine) {
   ScratchDir dir;
   const auto path = ascii_with_line(dir, 8, "11000100");
@@ -332,6 +345,78 @@ TEST(CellsReader, AsciiMalformedLayerLineNamesTheLine) {
   const auto path = ascii_with_line(dir, 10, "layer 1 at 1.625");
   const Error e = read_error(path);
   EXPECT_EQ(e.location, path.string() + ":10");
+}
+
+TEST(CellsReader, AsciiLineErrorsNameTheirLineAndSayWhatWasExpected) {
+  struct Case {
+    std::size_t line;
+    const char* replacement;
+    const char* message;
+  };
+  const Case cases[] = {
+      {3, "grid 5 3 2", "'grid' appears twice in the header"},
+      {4, "origin 0 0 0", "'origin' appears twice in the header"},
+      {6, "shell 1", "'shell' appears twice in the header"},
+      {10, "layers 1 z=1.625", "expected 'layer 1 z=<number>'"},
+      {10, "layer 1 q=1.625", "expected 'layer 1 z=<number>'"},
+      {7, "0001111x01",
+       "'1x' at layer 0, row 0, cell 3 (column 7) is not a cell code; expected 00, 01 or 11"},
+      {7, "000111110x",
+       "'0x' at layer 0, row 0, cell 4 (column 9) is not a cell code; expected 00, 01 or 11"},
+      {7, "x001111101",
+       "'x0' at layer 0, row 0, cell 0 (column 1) is not a cell code; expected 00, 01 or 11"},
+  };
+  for (const Case& c : cases) {
+    ScratchDir dir;
+    const auto path = ascii_with_line(dir, c.line, c.replacement);
+    const Error e = read_error(path);
+    EXPECT_EQ(e.location, path.string() + ":" + std::to_string(c.line)) << c.replacement;
+    EXPECT_EQ(e.message, c.message);
+  }
+}
+
+TEST(CellsReader, AsciiBadNumbersOfEveryHeaderKeyAndTheLayerIndexNameTheirLine) {
+  struct Case {
+    std::size_t line;
+    const char* replacement;
+    const char* token;
+  };
+  const Case cases[] = {{2, "grid 5 x 2", "x"},
+                        {4, "spacing 0.5 x 1", "x"},
+                        {5, "shell t", "t"},
+                        {10, "layer one z=1.625", "one"}};
+  for (const Case& c : cases) {
+    ScratchDir dir;
+    const auto path = ascii_with_line(dir, c.line, c.replacement);
+    const Error e = read_error(path);
+    EXPECT_EQ(e.location, path.string() + ":" + std::to_string(c.line)) << c.replacement;
+    EXPECT_EQ(e.message.rfind(std::string("bad number '") + c.token + "'", 0), 0u) << e.message;
+  }
+}
+
+TEST(CellsReader, AsciiMissingHeaderKeysAreNamedInOrder) {
+  struct Case {
+    std::size_t line;
+    const char* key;
+  };
+  for (const Case& c : {Case{2, "grid"}, Case{3, "origin"}, Case{4, "spacing"}}) {
+    ScratchDir dir;
+    const auto path = ascii_with_line(dir, c.line, "");
+    const Error e = read_error(path);
+    EXPECT_EQ(e.location, path.string() + ":6");
+    EXPECT_EQ(e.message,
+              std::string("the header has no '") + c.key + "' line before the first layer");
+  }
+}
+
+TEST(CellsReader, AsciiHeaderEndingWithoutAKeyIsNamedAfterTheLastLine) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Ascii);
+  const auto lines = testing::lines_of(read_file_bytes(path));
+  write_file_bytes(path, lines[0] + "\n" + lines[1] + "\n" + lines[2] + "\n" + lines[3] + "\n");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":5");
+  EXPECT_EQ(e.message, "the header has no 'shell' line before the first layer");
 }
 
 TEST(CellsReader, AsciiBadHeaderValueNamesTheLine) {
@@ -490,6 +575,10 @@ TEST(CellsReader, AsciiHeaderValuesAreCheckedAsInBinaryFiles) {
       {4, "spacing 0.5 -0.25 1", "spacing 0.5 -0.25 1 must be positive and finite"},
       {4, "spacing 0.5 0.25 0", "spacing 0.5 0.25 0 must be positive and finite"},
       {5, "shell -0.75", "shell thickness -0.75 must be finite and not negative"},
+      {2, "grid 0 3 2", "grid 0 x 3 x 2 has no cells; every size must be at least 1"},
+      {2, "grid 5 3 0", "grid 5 x 3 x 0 has no cells; every size must be at least 1"},
+      {4, "spacing 0 0.25 1", "spacing 0 0.25 1 must be positive and finite"},
+      {4, "spacing 0.5 0.25 -1", "spacing 0.5 0.25 -1 must be positive and finite"},
   };
   for (const Case& c : cases) {
     ScratchDir dir;
@@ -510,6 +599,37 @@ TEST(CellsReader, BinaryNonFiniteOriginIsRejected) {
   const Error e = read_error(path);
   EXPECT_EQ(e.location, path.string());
   EXPECT_EQ(e.message, "origin -1.5 inf 0.125 is not finite");
+}
+
+TEST(CellsReader, BinaryNonFiniteHeaderValuesAreRejected) {
+  // Values no ASCII file can hold (the number scanner refuses inf and nan), each at its offset.
+  struct Case {
+    int offset;
+    double value;
+    const char* message;
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const Case cases[] = {
+      {24, -inf, "origin -inf 2.25 0.125 is not finite"},
+      {40, nan, "origin -1.5 2.25 nan is not finite"},
+      {48, inf, "spacing inf 0.25 1 must be positive and finite"},
+      {56, nan, "spacing 0.5 nan 1 must be positive and finite"},
+      {64, inf, "spacing 0.5 0.25 inf must be positive and finite"},
+      {72, nan, "shell thickness nan must be finite and not negative"},
+  };
+  for (const Case& c : cases) {
+    ScratchDir dir;
+    const auto path = write_small(dir, CellsEncoding::Binary);
+    std::string file = read_file_bytes(path);
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &c.value, sizeof bits);
+    for (int b = 0; b < 8; ++b) file[c.offset + b] = static_cast<char>((bits >> (8 * b)) & 0xFF);
+    write_file_bytes(path, file);
+    const Error e = read_error(path);
+    EXPECT_EQ(e.location, path.string());
+    EXPECT_EQ(e.message, c.message);
+  }
 }
 
 TEST(CellsReader, BinaryGridTooLargeToAddressIsRejectedBeforeItsLength) {

@@ -1,3 +1,4 @@
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <array>
@@ -13,6 +14,7 @@
 #include <random>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "io/stl_format_internal.hpp"
@@ -845,6 +847,158 @@ TEST(ReadStlCorpus, OpenscadNanNormalKeepsTheFacet) {
   ASSERT_TRUE(soup) << soup.error().to_string();
   EXPECT_EQ(soup->triangles.size(), 94u);
   EXPECT_NE(find_diagnostic(*soup, "stl.bad_normal"), nullptr);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The rest of the ASCII grammar's refusals and warnings, each with its place and message.
+
+Error ascii_error(std::string_view text, const ReadLimits& limits = {}) {
+  const auto soup = read_stl_bytes(text, "t.stl", limits);
+  EXPECT_FALSE(soup.has_value());
+  return soup ? Error{} : soup.error();
+}
+
+TEST(ReadStlAscii, AVertexWithOneCoordinateSaysSo) {
+  const Error e = ascii_error(triangle_with_vertex_line(5, "   vertex 1"));
+  EXPECT_EQ(e.location, "t.stl:5");
+  EXPECT_EQ(e.message, "vertex has 1 coordinate, expected 3");
+}
+
+TEST(ReadStlAscii, KeywordLengthWordsThatAreNoKeywordsAreUnknown) {
+  // Words of the lengths of the keywords (5, 7 and 8 letters) that are none of them.
+  for (const std::string_view word : {"hello", "endlooq", "endfacex"}) {
+    const Error e = ascii_error(triangle_with_vertex_line(5, fmt::format("   {} 0 0 0", word)));
+    EXPECT_EQ(e.location, "t.stl:5");
+    EXPECT_EQ(e.message,
+              fmt::format("expected 'vertex', 'endloop' or 'endfacet', found '{}'", word));
+  }
+}
+
+TEST(ReadStlAscii, LoopKeywordsOutsideAFacetAreErrors) {
+  for (const std::string_view word : {"outer", "endloop", "endfacet"}) {
+    const Error e = ascii_error(fmt::format("solid t\n  {}\nendsolid t\n", word));
+    EXPECT_EQ(e.location, "t.stl:2");
+    EXPECT_EQ(e.message, fmt::format("'{}' outside a facet", word));
+  }
+  const Error other = ascii_error("solid t\n  vortex\nendsolid t\n");
+  EXPECT_EQ(other.location, "t.stl:2");
+  EXPECT_EQ(other.message, "expected 'facet' or 'endsolid', found 'vortex'");
+}
+
+TEST(ReadStlAscii, OuterWithoutLoopIsAWarningQuotingTheRest) {
+  std::string text = kTriangle;
+  text.replace(text.find("outer loop"), 10, "outer lop x");
+  const auto soup = read_stl_bytes(text, "t.stl");
+  ASSERT_TRUE(soup) << soup.error().to_string();
+  const Diagnostic* warning = find_diagnostic(*soup, "stl.trailing_tokens");
+  ASSERT_NE(warning, nullptr);
+  EXPECT_EQ(warning->message, "t.stl:3: unexpected text 'lop x' after 'outer' ignored");
+}
+
+TEST(ReadStlAscii, LongOrControlCharacterTextIsQuotedShortAndVisible) {
+  std::string text = kTriangle;
+  text.replace(text.find("endloop"), 7, "endloop " + std::string(70, 'y'));
+  text.replace(text.find("endfacet"), 8, "endfacet \x7f\x01z");
+  const auto soup = read_stl_bytes(text, "t.stl");
+  ASSERT_TRUE(soup) << soup.error().to_string();
+  const Diagnostic* warning = find_diagnostic(*soup, "stl.trailing_tokens");
+  ASSERT_NE(warning, nullptr);
+  EXPECT_EQ(warning->message, "t.stl:7: unexpected text '" + std::string(60, 'y') +
+                                  "...' after 'endloop' ignored (2 times in all; also at line 8)");
+}
+
+TEST(ReadStlAscii, ABadNormalOfOtherTextIsQuoted) {
+  std::string text = kTriangle;
+  text.replace(text.find("facet normal 0 0 1"), 18, "facet \x7f normal");
+  const auto soup = read_stl_bytes(text, "t.stl");
+  ASSERT_TRUE(soup) << soup.error().to_string();
+  const Diagnostic* warning = find_diagnostic(*soup, "stl.bad_normal");
+  ASSERT_NE(warning, nullptr);
+  EXPECT_EQ(warning->message,
+            "t.stl:2: stored normal '\\x7f normal' is not three finite numbers; the normal is "
+            "ignored, the facet kept");
+}
+
+TEST(ReadStlAscii, ASolidOrFacetInsideAFacetEndsItWithAWarning) {
+  const std::string facet = kTriangle.substr(8, kTriangle.find(" endfacet") - 8);
+  const std::string text = "solid a\n" + facet + facet + " endfacet\n" + facet + "solid b\n" +
+                           facet + " endfacet\nendsolid b\n";
+  const auto soup = read_stl_bytes(text, "t.stl");
+  ASSERT_TRUE(soup) << soup.error().to_string();
+  EXPECT_EQ(soup->triangles.size(), 4u);
+  const Diagnostic* endfacet = find_diagnostic(*soup, "stl.missing_endfacet");
+  ASSERT_NE(endfacet, nullptr);
+  EXPECT_EQ(endfacet->message,
+            "t.stl:2: facet has no 'endfacet' line; read up to line 8 (2 times in all; also at "
+            "line 15)");
+  const Diagnostic* endsolid = find_diagnostic(*soup, "stl.missing_endsolid");
+  ASSERT_NE(endsolid, nullptr);
+  EXPECT_EQ(endsolid->message, "t.stl:1: solid has no 'endsolid' line");
+  const Diagnostic* solids = find_diagnostic(*soup, "stl.multiple_solids");
+  ASSERT_NE(solids, nullptr);
+  EXPECT_EQ(solids->message, "t.stl: 2 solids in one file; all are read");
+}
+
+TEST(ReadStlAscii, FacetsBeyondTheLimitAreAnErrorWhereverTheFacetEnds) {
+  ReadLimits limits;
+  limits.max_triangles = 1;
+  const std::string facet = kTriangle.substr(8, kTriangle.find("endsolid") - 8);
+  const Error at_endfacet = ascii_error("solid t\n" + facet + facet + "endsolid t\n", limits);
+  EXPECT_EQ(at_endfacet.location, "t.stl:9");
+  EXPECT_EQ(at_endfacet.message, "more than the limit of 1 facets");
+  const std::string open_facet = facet.substr(0, facet.find(" endfacet"));
+  const Error at_solid = ascii_error("solid t\n" + facet + open_facet + "endsolid t\n", limits);
+  EXPECT_EQ(at_solid.location, "t.stl:9");
+  EXPECT_EQ(at_solid.message, "more than the limit of 1 facets");
+}
+
+TEST(ReadStlAscii, AByteOrderMarkBeforeSolidIsSkipped) {
+  const auto soup = read_stl_bytes("\xEF\xBB\xBF" + kTriangle, "t.stl");
+  ASSERT_TRUE(soup) << soup.error().to_string();
+  EXPECT_EQ(soup->format, "stl-ascii");
+  EXPECT_EQ(soup->triangles.size(), 1u);
+}
+
+TEST(ReadStlDetection, SolidEndsAtABlankOrALineEnd) {
+  EXPECT_TRUE(detail::starts_with_solid("\tsolid\n"));
+  EXPECT_TRUE(detail::starts_with_solid("\v\fsolid\r"));
+  EXPECT_TRUE(detail::starts_with_solid("solid"));
+  EXPECT_FALSE(detail::starts_with_solid("solidity"));
+  EXPECT_FALSE(detail::starts_with_solid("soli"));
+}
+
+TEST(ReadStlBinary, ANonFiniteCoordinateOnAnyAxisNamesTheCorner) {
+  const float inf = std::numeric_limits<float>::infinity();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const Float3 ok{0, 0, 0};
+  const std::vector<std::pair<Float3, std::string>> cases = {
+      {{inf, 0, 0}, "corner 1 has a non-finite coordinate (inf, 0, 0)"},
+      {{0, -inf, 0}, "corner 1 has a non-finite coordinate (0, -inf, 0)"},
+      {{0, 0, nan}, "corner 1 has a non-finite coordinate (0, 0, nan)"}};
+  for (const auto& [corner, message] : cases) {
+    const auto soup =
+        read_stl_bytes(binary_stl({{{0, 0, 1}, {ok, corner, Float3{0, 1, 0}}}}), "t.stl");
+    ASSERT_FALSE(soup);
+    EXPECT_EQ(soup.error().location, "t.stl: facet 0");
+    EXPECT_EQ(soup.error().message, message + "; NaN and infinity cannot be sliced");
+  }
+}
+
+TEST(ReadStlBinary, ANonFiniteNormalOnAnyAxisIsIgnored) {
+  const float inf = std::numeric_limits<float>::infinity();
+  const Facet base{{0, 0, 1}, {Float3{0, 0, 0}, Float3{1, 0, 0}, Float3{0, 1, 0}}};
+  Facet y = base;
+  y.normal = {0, inf, 0};
+  Facet z = base;
+  z.normal = {0, 0, -inf};
+  const auto soup = read_stl_bytes(binary_stl({base, y, z}), "t.stl");
+  ASSERT_TRUE(soup) << soup.error().to_string();
+  EXPECT_EQ(soup->stored_normals, (std::vector<Vec3>{{0, 0, 1}, {}, {}}));
+  const Diagnostic* warning = find_diagnostic(*soup, "stl.bad_normal");
+  ASSERT_NE(warning, nullptr);
+  EXPECT_EQ(warning->message,
+            "t.stl: facet 1: stored normal (0, inf, 0) is not finite; the normal is ignored, the "
+            "facet kept (2 times in all; also at facet 2)");
 }
 
 }  // namespace

@@ -12,14 +12,14 @@ namespace strata::io {
 namespace {
 
 /// The value, or the fault, of a token scanned as a double.
-void expect_real(const char* token, double value, NumberType type = NumberType::Float64) {
+void expect_real(const std::string& token, double value, NumberType type = NumberType::Float64) {
   const ScannedNumber<double> scanned = scan_real(token, type);
   ASSERT_TRUE(scanned.ok()) << token << ": " << bad_number_message(token, scanned.fault, type);
   EXPECT_EQ(scanned.value, value) << token;
   EXPECT_EQ(std::signbit(scanned.value), std::signbit(value)) << token;
 }
 
-void expect_real_fault(const char* token, NumberFault fault,
+void expect_real_fault(const std::string& token, NumberFault fault,
                        NumberType type = NumberType::Float64) {
   const ScannedNumber<double> scanned = scan_real(token, type);
   EXPECT_EQ(scanned.fault, fault) << token << " read as " << scanned.value;
@@ -75,6 +75,16 @@ TEST(ScanReal, UnderflowReadsAsZeroOfTheTokensSign) {
   expect_real("100000e-330", 0.0);
   expect_real("-0.00000e-99999999999999999999999", -0.0);
   expect_real("0e999999", 0.0);
+}
+
+TEST(ScanReal, LongDigitStringsOverflowOrUnderflowByTheirMagnitude) {
+  // Without a decimal point or an exponent, 400 digits are beyond any double; 400 zeros after
+  // the point, and an explicit '+' exponent, decide the same way.
+  expect_real_fault("1" + std::string(400, '0'), NumberFault::TooLarge);
+  expect_real_fault("0001" + std::string(400, '0') + ".5", NumberFault::TooLarge);
+  expect_real_fault("1E+400", NumberFault::TooLarge);
+  expect_real("0." + std::string(400, '0') + "1", 0.0);
+  expect_real("-0." + std::string(400, '0') + "1", -0.0);
 }
 
 TEST(ScanReal, Float32RoundsToNearestAndOverflowsBeyondItsRange) {
@@ -169,6 +179,13 @@ TEST(BadNumberMessage, ShowsControlBytesAndCutsLongTokens) {
   EXPECT_EQ(
       bad_number_message(std::string(50, '7') + "x", NumberFault::NotANumber, NumberType::Float64),
       "bad number '" + std::string(40, '7') + "...': not a number");
+}
+
+TEST(BadNumberMessage, ShowsBytesBeyondAsciiAsHex) {
+  EXPECT_EQ(bad_number_message("1\xc3\xa9", NumberFault::NotANumber, NumberType::Float64),
+            "bad number '1\\xc3\\xa9': not a number");
+  EXPECT_EQ(bad_number_message("\x7f", NumberFault::NotANumber, NumberType::Float64),
+            "bad number '\\x7f': not a number");
 }
 
 TEST(BadNumber, IsABadInputErrorAtTheGivenLocation) {

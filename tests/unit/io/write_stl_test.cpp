@@ -144,6 +144,22 @@ TEST(StlBytesBinary, DegenerateFacetGetsZeroNormal) {
   EXPECT_EQ(binary_normal(stl_bytes(flat, StlEncoding::Binary), 0), (Vec3{0, 0, 0}));
 }
 
+TEST(StlBytesBinary, ValuesBeyondFloat32BecomeInfinityAndNanStaysNan) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::string bytes =
+      stl_bytes(single_triangle({1e39, -1e39, nan}, {0, 0, 0}, {0, 1, 0}), StlEncoding::Binary);
+  EXPECT_EQ(f32_at(bytes, 84 + 12), std::numeric_limits<float>::infinity());
+  EXPECT_EQ(f32_at(bytes, 84 + 16), -std::numeric_limits<float>::infinity());
+  EXPECT_TRUE(std::isnan(f32_at(bytes, 84 + 20)));
+  EXPECT_EQ(binary_normal(bytes, 0), (Vec3{0, 0, 0}));  // no normal of an infinite facet
+}
+
+TEST(StlBytesBinary, AFacetWithAnInfiniteEdgeGetsZeroNormal) {
+  // 1e39 becomes +inf: the cross product is (0, -inf, inf), of infinite length, not NaN.
+  const auto infinite = single_triangle({0, 0, 0}, {1e39, 0, 0}, {0, 1, 1});
+  EXPECT_EQ(binary_normal(stl_bytes(infinite, StlEncoding::Binary), 0), (Vec3{0, 0, 0}));
+}
+
 TEST(StlBytesBinary, IgnoresStoredNormals) {
   auto soup = single_triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
   soup.stored_normals.push_back({1, 0, 0});

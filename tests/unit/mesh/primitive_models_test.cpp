@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <set>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -92,6 +95,23 @@ std::vector<std::array<Vec3, 3>> sorted_triangles(const TriangleSoup& soup) {
   return t;
 }
 
+/// The message of the InternalError that `make` throws ("" when it throws none): the violated
+/// precondition's text follows "failed: ".
+template <class Make>
+std::string precondition_message(const Make& make) {
+  try {
+    make();
+  } catch (const InternalError& e) {
+    const std::string what = e.what();
+    const std::size_t at = what.find("failed: ");
+    return at == std::string::npos ? what : what.substr(at + 8);
+  }
+  return "";
+}
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
 // --- make_box -------------------------------------------------------------------------------
 
 TEST(MakeBox, HasTwelveTriangles) {
@@ -126,6 +146,22 @@ TEST(MakeBox, RoundsCornersToFloat32) {
 
 TEST(MakeBox, RejectsEmptyBox) { EXPECT_THROW(make_box({0, 0, 0}, {1, 0, 1}), InternalError); }
 
+TEST(MakeBox, RejectsANonFiniteCoordinateOfEitherCorner) {
+  const std::string message = "box corners must be finite";
+  EXPECT_EQ(precondition_message([] { make_box({kNan, 0, 0}, {1, 1, 1}); }), message);
+  EXPECT_EQ(precondition_message([] { make_box({0, kInf, 0}, {1, 1, 1}); }), message);
+  EXPECT_EQ(precondition_message([] { make_box({0, 0, -kInf}, {1, 1, 1}); }), message);
+  EXPECT_EQ(precondition_message([] { make_box({0, 0, 0}, {1, 1, kNan}); }), message);
+}
+
+TEST(MakeBox, RejectsMinNotBelowMaxOnEachAxis) {
+  const std::string message = "box min must be below max";
+  EXPECT_EQ(precondition_message([] { make_box({1, 0, 0}, {1, 1, 1}); }), message);
+  EXPECT_EQ(precondition_message([] { make_box({0, 2, 0}, {1, 1, 1}); }), message);
+  EXPECT_EQ(precondition_message([] { make_box({0, 0, 1}, {1, 1, 0.5}); }), message);
+  EXPECT_EQ(precondition_message([] { make_box({0, 0, 0}, {1, 1, 1}); }), "");
+}
+
 // --- make_tetrahedron ------------------------------------------------------------------------
 
 TEST(MakeTetrahedron, DefaultIsTheTenMillimetreCorner) {
@@ -149,6 +185,27 @@ TEST(MakeTetrahedron, OrientsOutwardWhateverTheCornerOrder) {
 
 TEST(MakeTetrahedron, RejectsCoplanarCorners) {
   EXPECT_THROW(make_tetrahedron({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}), InternalError);
+}
+
+TEST(MakeTetrahedron, RejectsANonFiniteCorner) {
+  const std::string message = "tetrahedron corners must be finite";
+  const Vec3 bad{0, kNan, 0};
+  EXPECT_EQ(precondition_message([&] {
+              make_tetrahedron(bad, {1, 0, 0}, {0, 1, 0}, {0, 0, 1});
+            }),
+            message);
+  EXPECT_EQ(precondition_message([&] {
+              make_tetrahedron({0, 0, 0}, bad, {0, 1, 0}, {0, 0, 1});
+            }),
+            message);
+  EXPECT_EQ(precondition_message([&] {
+              make_tetrahedron({0, 0, 0}, {1, 0, 0}, bad, {0, 0, 1});
+            }),
+            message);
+  EXPECT_EQ(precondition_message([&] {
+              make_tetrahedron({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, bad);
+            }),
+            message);
 }
 
 // --- make_ring -------------------------------------------------------------------------------
@@ -207,6 +264,19 @@ TEST(MakeRing, RejectsInnerRadiusNotBelowOuter) {
   EXPECT_THROW(make_ring(10, 10, 5, 32), InternalError);
 }
 
+TEST(MakeRing, RejectsEachInvalidParameterWithItsMessage) {
+  const std::string finite = "ring sizes must be finite";
+  EXPECT_EQ(precondition_message([] { make_ring(kInf, 12, 10, 32); }), finite);
+  EXPECT_EQ(precondition_message([] { make_ring(20, kNan, 10, 32); }), finite);
+  EXPECT_EQ(precondition_message([] { make_ring(20, 12, kInf, 32); }), finite);
+  EXPECT_EQ(precondition_message([] { make_ring(20, 0, 10, 32); }),
+            "ring needs 0 < r_inner < r_outer");
+  EXPECT_EQ(precondition_message([] { make_ring(20, 12, 0, 32); }), "ring height must be positive");
+  EXPECT_EQ(precondition_message([] { make_ring(20, 12, 10, 2); }),
+            "ring needs at least 3 segments");
+  EXPECT_EQ(make_ring(20, 12, 10, 3).triangles.size(), 24U);
+}
+
 // --- make_cylinder ---------------------------------------------------------------------------
 
 TEST(MakeCylinder, HasFourTrianglesPerSegment) {
@@ -224,7 +294,28 @@ TEST(MakeCylinder, VolumeMatchesThePolygonalPrism) {
   EXPECT_NEAR(signed_volume(make_cylinder(5, 10, 64)), expected, expected * 1e-6);
 }
 
+TEST(MakeCylinder, RejectsEachInvalidParameterWithItsMessage) {
+  const std::string finite = "cylinder sizes must be finite";
+  EXPECT_EQ(precondition_message([] { make_cylinder(kNan, 10, 16); }), finite);
+  EXPECT_EQ(precondition_message([] { make_cylinder(5, kInf, 16); }), finite);
+  const std::string positive = "cylinder radius and height must be positive";
+  EXPECT_EQ(precondition_message([] { make_cylinder(-5, 10, 16); }), positive);
+  EXPECT_EQ(precondition_message([] { make_cylinder(5, 0, 16); }), positive);
+  EXPECT_EQ(precondition_message([] { make_cylinder(5, 10, 2); }),
+            "cylinder needs at least 3 segments");
+  EXPECT_EQ(make_cylinder(5, 10, 3).triangles.size(), 12U);
+}
+
 // --- make_sphere -----------------------------------------------------------------------------
+
+TEST(MakeSphere, RejectsEachInvalidParameterWithItsMessage) {
+  const std::string radius = "sphere radius must be positive";
+  EXPECT_EQ(precondition_message([] { make_sphere(kInf, 1); }), radius);
+  EXPECT_EQ(precondition_message([] { make_sphere(0, 1); }), radius);
+  const std::string subdivisions = "sphere subdivisions must be in [0, 7]";
+  EXPECT_EQ(precondition_message([] { make_sphere(1, -1); }), subdivisions);
+  EXPECT_EQ(precondition_message([] { make_sphere(1, 8); }), subdivisions);
+}
 
 TEST(MakeSphere, HasTwentyTimesFourToTheSubdivisionsTriangles) {
   EXPECT_EQ(make_sphere(1, 0).triangles.size(), 20U);
@@ -284,6 +375,16 @@ TEST(RotateSoupZ90, MapsXyToMinusYX) {
   }
 }
 
+TEST(RotateSoupZ90, RotatesTheStoredNormalsToo) {
+  TriangleSoup soup;
+  soup.triangles.push_back({Vec3{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  soup.triangles.push_back({Vec3{0, 0, 0}, {0, 0, 1}, {1, 0, 0}});
+  soup.stored_normals = {{0, 0, 1}, {0, -1, 0}};
+  const auto turned = rotate_soup_z90(soup);
+  EXPECT_EQ(turned.stored_normals, (std::vector<Vec3>{{0, 0, 1}, {1, 0, 0}}));
+  EXPECT_EQ(turned.triangles[1], (std::array<Vec3, 3>{Vec3{0, 0, 0}, {0, 0, 1}, {0, 1, 0}}));
+}
+
 TEST(RotateSoupZ90, FourQuarterTurnsGiveTheSameBits) {
   const auto sphere = make_sphere(10, 2);
   const auto back = rotate_soup_z90(rotate_soup_z90(rotate_soup_z90(rotate_soup_z90(sphere))));
@@ -303,6 +404,14 @@ TEST(TranslateSoup, MovesEveryCornerByTheOffset) {
   EXPECT_EQ(*corner_set(moved).begin(), Key(10, -20, 0.5));
   EXPECT_EQ(closedness_defect(moved), "");
   EXPECT_DOUBLE_EQ(signed_volume(moved), 6.0);
+}
+
+TEST(ScaleSoup, RejectsAFactorThatIsNotPositiveAndFinite) {
+  const auto box = make_box({0, 0, 0}, {1, 1, 1});
+  const std::string message = "scale factor must be positive";
+  EXPECT_EQ(precondition_message([&] { scale_soup(box, kInf); }), message);
+  EXPECT_EQ(precondition_message([&] { scale_soup(box, -2.0); }), message);
+  EXPECT_EQ(precondition_message([&] { scale_soup(box, 0.0); }), message);
 }
 
 TEST(ScaleSoup, ScalingByTwoMultipliesTheVolumeByEightExactly) {
@@ -354,6 +463,15 @@ TEST(FlipOrientation, NegatesTheVolumeExactly) {
 
 TEST(FlipOrientation, KeepsTheSurfaceClosed) {
   EXPECT_EQ(closedness_defect(flip_orientation(make_ring(20, 12, 10, 16))), "");
+}
+
+TEST(FlipOrientation, NegatesTheStoredNormals) {
+  TriangleSoup soup;
+  soup.triangles.push_back({Vec3{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  soup.stored_normals = {{0, 0.5, 1}};
+  const auto flipped = flip_orientation(soup);
+  EXPECT_EQ(flipped.triangles[0], (std::array<Vec3, 3>{Vec3{0, 0, 0}, {0, 1, 0}, {1, 0, 0}}));
+  EXPECT_EQ(flipped.stored_normals, (std::vector<Vec3>{{0, -0.5, -1}}));
 }
 
 TEST(FlipOrientation, TwiceIsTheIdentity) {

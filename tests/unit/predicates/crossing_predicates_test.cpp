@@ -63,6 +63,24 @@ TEST(CrossingXSign, MirrorsTheYPredicate) {
   EXPECT_EQ(crossing_x_sign({0, 0, 0}, {4, 0, 4}, 1, 1.0), 0);
 }
 
+TEST(CrossingXSign, EndPointsOnBothSidesOfXNeedTheCrossing) {
+  // lo right of x, hi left of it: the crossing at z = 1 is x = 1, on the line.
+  EXPECT_EQ(sign_and_fallback([&] {
+              return crossing_x_sign({2, 0, 0}, {0, 0, 2}, 1, 1.0);
+            }),
+            std::make_pair(0, true));
+  // lo on x, hi right of it: the crossing at z = 1 is x = 2.
+  EXPECT_EQ(sign_and_fallback([&] {
+              return crossing_x_sign({1, 0, 0}, {3, 0, 2}, 1, 1.0);
+            }),
+            std::make_pair(1, false));
+  // lo on x, hi left of it: the crossing at z = 1 is x = 0.
+  EXPECT_EQ(sign_and_fallback([&] {
+              return crossing_x_sign({1, 0, 0}, {-1, 0, 2}, 1, 1.0);
+            }),
+            std::make_pair(-1, false));
+}
+
 TEST(ScanlineCrossingXSign, BoundsOfTheEndPointsDecideFarCentres) {
   // P = (0, 0), Q = (2, 2) at z = 1 (edges from z = 0 to z = 2); the line y = 1 meets PQ at x = 1.
   const Vec3 p_lo{0, 0, 0}, p_hi{0, 0, 2}, q_lo{2, 2, 0}, q_hi{2, 2, 2};
