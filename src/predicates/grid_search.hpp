@@ -7,31 +7,15 @@
 
 namespace strata::detail {
 
-/// A non-owning reference to a callable `bool(std::uint32_t)`, which must outlive it. It lets
-/// count_prefix be one function for every caller instead of one copy for each caller's lambda,
-/// so its walks are the same code (and the same tested branches) in every stage.
-class IndexPredicate {
- public:
-  /// Refers to `f`; implicit, so that a caller passes its lambda as it is. (Copying an
-  /// IndexPredicate uses the copy constructor, which wins over this template on a tie.)
-  template <class F>
-  IndexPredicate(const F& f)  // NOLINT(google-explicit-constructor)
-      : object_(&f), call_([](const void* object, std::uint32_t k) -> bool {
-          return (*static_cast<const F*>(object))(k);
-        }) {}
-
-  bool operator()(std::uint32_t k) const { return call_(object_, k); }
-
- private:
-  const void* object_;
-  bool (*call_)(const void*, std::uint32_t);
-};
-
 /// The number of k in [0, n) whose value(k) satisfies `below(k)`, where `below` is true for a
 /// prefix of [0, n) (monotone). `estimate` is a first guess (may be anything, e.g. NaN-free
 /// rounding of an approximate answer); the exact predicate then walks from it, so the answer
 /// is exact and the cost is O(1) when the guess is close.
-inline std::uint32_t count_prefix(double estimate, std::uint32_t n, IndexPredicate below) {
+/// A template, so that each caller's predicate is inlined into the walk: one function behind a
+/// function pointer measured 2.8 -> 5.0 ns a call with slice_float's plane test (coverage then
+/// counts the walk's branches once per caller).
+template <class Below>
+std::uint32_t count_prefix(double estimate, std::uint32_t n, const Below& below) {
   std::uint32_t k;
   if (!(estimate > 0.0)) {
     k = 0;
