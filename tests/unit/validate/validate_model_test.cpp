@@ -110,6 +110,30 @@ TEST(ValidateModel, RefusesTheWindingRule) {
   EXPECT_EQ(r.error().code, ErrorCode::Usage);
 }
 
+TEST(ValidateModel, MeasuresTheFastPathAloneWhenTheExactPathRefusesTheModel) {
+  // A vertex no facet uses, with a non-finite coordinate: the exact path checks every vertex and
+  // refuses the model; the fast path slices the facets.
+  IndexedMesh mesh = box_mesh({0, 0, 0}, {6, 4, 3});
+  const GridSpec grid = make_grid(mesh.bounds(), unit_cells().grid).value();
+  mesh.vertices.push_back({std::nan(""), 0, 0});
+  ValidateOptions validate_options;
+  validate_options.window_layers = 1;
+  auto report = validate_model(mesh, grid, unit_cells(), validate_options);
+  ASSERT_TRUE(report.has_value()) << report.error().to_string();
+  const ValidationReport& r = *report;
+  ASSERT_TRUE(r.exact_error.has_value());
+  EXPECT_EQ(r.exact_error->code, ErrorCode::BadInput);
+  EXPECT_EQ(r.exact_error->message, "vertex 8 has a non-finite coordinate (nan, 0, 0)");
+  EXPECT_FALSE(r.cells_agree());
+  EXPECT_TRUE(r.fast.ran);
+  EXPECT_FALSE(r.exact.ran);
+  EXPECT_EQ(r.layers_compared, 0u);
+  EXPECT_DOUBLE_EQ(r.fast.cell_volume_mm3, 72.0);
+  // The fast path's layers are measured all the same.
+  EXPECT_EQ(r.fast.solid_bounds.max, (Vec3{6, 4, 3}));
+  EXPECT_EQ(r.model.shell.cells, 8u);
+}
+
 TEST(ValidationJson, SaysTheCellsAgree) {
   const ValidationReport r = validate(box_mesh({0, 0, 0}, {3, 2, 2}), unit_cells());
   const nlohmann::json j = nlohmann::json::parse(validation_json(r));
