@@ -535,5 +535,28 @@ TEST(RepairMesh, ListsTheChangesOfOneFacetInTheOrderTheStepsRan) {
   EXPECT_EQ(after.verdict, diagnose::Verdict::Printable) << after.verdict_reason;
 }
 
+TEST(RepairMesh, RemovesFacetsThatRepeatACornerWhereverItIsRepeated) {
+  const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0};
+  const std::vector<Triangle> box_facets = box({0, 0, 0}, {1, 1, 1});
+  const std::vector<Triangle> needles = {{a, a, b}, {a, b, b}, {c, b, c}};
+  const RepairResult r = repaired(soup_of(joined(box_facets, needles)));
+  EXPECT_EQ(r.log.degenerate_facets_removed, 3u);
+  EXPECT_EQ(r.soup.triangles, box_facets);
+  EXPECT_EQ(r.log.changes.size(), 3u);
+  for (const FacetChange& change : r.log.changes) {
+    EXPECT_GE(change.facet, 12u);
+    EXPECT_EQ(change.kind, FacetChangeKind::RemovedDegenerate);
+  }
+}
+
+TEST(RepairMesh, LeavesATJunctionCrackOpenWhenAsked) {
+  const TriangleSoup input = soup_of(box_with_t_junction());
+  const auto result = repair_mesh(input, RepairOptions{.close_t_junctions = false});
+  ASSERT_TRUE(result.has_value()) << result.error().to_string();
+  EXPECT_EQ(result->log.t_junctions_closed, 0u);
+  EXPECT_EQ(result->log.output_facets, 13u);
+  EXPECT_EQ(diagnose_soup(result->soup).boundary_edges.count, 3u);
+}
+
 }  // namespace
 }  // namespace strata::repair
