@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 
 #include "strata/mesh/primitive_models.hpp"
@@ -110,28 +111,23 @@ TEST(ValidateModel, RefusesTheWindingRule) {
   EXPECT_EQ(r.error().code, ErrorCode::Usage);
 }
 
-TEST(ValidateModel, MeasuresTheFastPathAloneWhenTheExactPathRefusesTheModel) {
-  // A vertex no facet uses, with a non-finite coordinate: the exact path checks every vertex and
-  // refuses the model; the fast path slices the facets.
-  IndexedMesh mesh = box_mesh({0, 0, 0}, {6, 4, 3});
+TEST(ValidateModel, StopsWithAnInternalErrorWhenTheComparisonFails) {
+  // The progress callback runs inside the comparison of each layer pair; its failure stops both
+  // paths, and the report is replaced by the error.
+  const IndexedMesh mesh = box_mesh({0, 0, 0}, {6, 4, 3});
   const GridSpec grid = make_grid(mesh.bounds(), unit_cells().grid).value();
-  mesh.vertices.push_back({std::nan(""), 0, 0});
   ValidateOptions validate_options;
   validate_options.window_layers = 1;
-  auto report = validate_model(mesh, grid, unit_cells(), validate_options);
-  ASSERT_TRUE(report.has_value()) << report.error().to_string();
-  const ValidationReport& r = *report;
-  ASSERT_TRUE(r.exact_error.has_value());
-  EXPECT_EQ(r.exact_error->code, ErrorCode::BadInput);
-  EXPECT_EQ(r.exact_error->message, "vertex 8 has a non-finite coordinate (nan, 0, 0)");
-  EXPECT_FALSE(r.cells_agree());
-  EXPECT_TRUE(r.fast.ran);
-  EXPECT_FALSE(r.exact.ran);
-  EXPECT_EQ(r.layers_compared, 0u);
-  EXPECT_DOUBLE_EQ(r.fast.cell_volume_mm3, 72.0);
-  // The fast path's layers are measured all the same.
-  EXPECT_EQ(r.fast.solid_bounds.max, (Vec3{6, 4, 3}));
-  EXPECT_EQ(r.model.shell.cells, 8u);
+  std::uint32_t calls = 0;
+  validate_options.progress = [&](std::uint32_t, std::uint32_t) {
+    ++calls;
+    throw std::runtime_error("progress display closed");
+  };
+  const auto report = validate_model(mesh, grid, unit_cells(), validate_options);
+  ASSERT_FALSE(report.has_value());
+  EXPECT_EQ(report.error().code, ErrorCode::Internal);
+  EXPECT_EQ(report.error().message, "comparing layers: progress display closed");
+  EXPECT_EQ(calls, 1u);
 }
 
 TEST(ValidationJson, SaysTheCellsAgree) {
