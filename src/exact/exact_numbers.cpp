@@ -11,12 +11,12 @@ namespace {
 
 /// Correct rounding for results below the normal range, where MPFR's 53-bit result would be
 /// rounded a second time: mpq_get_d truncates towards zero, so the nearest double is d or its
-/// neighbour away from zero, told apart by the exact midpoint.
+/// neighbour away from zero, told apart by the exact midpoint. @pre q is not zero.
 double round_small(mpq_srcptr q) {
   const mpq_class exact(q);
   const double d = mpq_get_d(q);
   const int s = sgn(exact);
-  if (s == 0 || mpq_class(d) == exact) return d;
+  if (mpq_class(d) == exact) return d;
   const double away = std::nextafter(d, s > 0 ? HUGE_VAL : -HUGE_VAL);
   const mpq_class mid = (mpq_class(d) + mpq_class(away)) / 2;
   const int c = s > 0 ? cmp(exact, mid) : -cmp(exact, mid);

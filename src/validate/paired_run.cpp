@@ -89,20 +89,6 @@ class Coordinator {
     return {};
   }
 
-  /// Layers left when both paths have ended, in increasing k.
-  void flush() {
-    std::lock_guard lock(mutex_);
-    while (!sides_[0].held.empty() || !sides_[1].held.empty()) {
-      const int s =
-          sides_[1].held.empty() || (!sides_[0].held.empty() &&
-                                     sides_[0].held.begin()->first < sides_[1].held.begin()->first)
-              ? 0
-              : 1;
-      auto node = sides_[s].held.extract(sides_[s].held.begin());
-      deliver_alone(s, node.mapped());
-    }
-  }
-
   double busy(int s) const { return sides_[s].busy; }
 
  private:
@@ -190,7 +176,8 @@ PairedOutcome run_paired(const SliceCall& a, const SliceCall& b, const PairCallb
   std::thread thread_a([&] { run_side(0, a, outcome.a); });
   thread_a.join();
   thread_b.join();
-  coordinator.flush();
+  // No layer is left held: a side holds layers only while its partner runs, and the partner's
+  // end hands them over.
   outcome.seconds_a = coordinator.busy(0);
   outcome.seconds_b = coordinator.busy(1);
   return outcome;

@@ -53,8 +53,9 @@ const char* to_string(ReferenceSkip skip) {
     case ReferenceSkip::NotClosed:
       return "not-closed";
     case ReferenceSkip::Failed:
-      return "failed";
+      break;
   }
+  // The last case shares the return after the switch: no line is left that no value reaches.
   return "failed";
 }
 
@@ -128,23 +129,19 @@ Contour open_contour(std::vector<Point2> points) {
 
 bool point_less(const Point2& a, const Point2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 
-/// Joins open chains end to start where an end point equals a start point (CGAL cuts its
-/// polylines at vertices on the plane where more than two of them meet; each piece keeps the
-/// orientation of its facets, so the pieces of a loop follow each other).
+}  // namespace
+
 void join_chains(std::vector<std::vector<Point2>> chains, ReferenceSection& out) {
   std::multimap<Point2, std::size_t, decltype(&point_less)> by_start(&point_less);
   for (std::size_t i = 0; i < chains.size(); ++i) by_start.emplace(chains[i].front(), i);
   std::vector<bool> used(chains.size(), false);
+  // A chain leaves by_start when it is used, so the first chain starting at p is free.
   const auto take_from = [&](const Point2& p) -> std::size_t {
-    auto [lo, hi] = by_start.equal_range(p);
-    for (auto it = lo; it != hi; ++it) {
-      if (!used[it->second]) {
-        const std::size_t i = it->second;
-        by_start.erase(it);
-        return i;
-      }
-    }
-    return chains.size();
+    const auto it = by_start.lower_bound(p);
+    if (it == by_start.end() || point_less(p, it->first)) return chains.size();
+    const std::size_t i = it->second;
+    by_start.erase(it);
+    return i;
   };
   for (std::size_t seed = 0; seed < chains.size(); ++seed) {
     if (used[seed]) continue;
@@ -177,8 +174,6 @@ void join_chains(std::vector<std::vector<Point2>> chains, ReferenceSection& out)
     }
   }
 }
-
-}  // namespace
 
 struct ReferenceSlicer::Impl {
   ReferenceSlicerFigures figures;

@@ -26,6 +26,15 @@ struct ReferenceSection {
   std::uint32_t open_after_joining = 0;
 };
 
+/// Joins open chains end to start where an end point equals a start point (CGAL cuts its
+/// polylines at vertices on the plane where more than two of them meet; each piece keeps the
+/// orientation of its facets, so the pieces of a loop follow each other). A chain that comes back
+/// to its first point becomes a closed contour (that point not repeated, Outer when
+/// counter-clockwise, Hole otherwise); the others stay open (LoopKind::Open), each counted in
+/// `out.open_after_joining`. Chains are taken in order, each joined to the first unused chain that
+/// starts where it ends.
+void join_chains(std::vector<std::vector<Point2>> chains, ReferenceSection& out);
+
 /// CGAL's Polygon_mesh_slicer with the exact kernel (Epeck) over a CGAL::Surface_mesh of the
 /// mesh, built once when the mesh is a closed, consistently oriented 2-manifold.
 ///

@@ -7,24 +7,14 @@
 #include <tuple>
 #include <vector>
 
+#include "validate/cell_code_internal.hpp"
+
 namespace strata::validate {
 
 namespace {
 
 constexpr std::size_t kListedInText = 20;
 constexpr std::size_t kWorstLayers = 5;
-
-const char* class_code(CellClass c) {
-  switch (c) {
-    case CellClass::Empty:
-      return "00";
-    case CellClass::Interior:
-      return "01";
-    case CellClass::Boundary:
-      return "11";
-  }
-  return "10";
-}
 
 std::string thousands(std::uint64_t n) {
   const std::string digits = std::to_string(n);
@@ -141,9 +131,10 @@ std::string validation_text(const ValidationReport& r) {
     const std::size_t shown = std::min(kListedInText, r.differences.size());
     for (std::size_t q = 0; q < shown; ++q) {
       const CellDifference& d = r.differences[q];
-      out += fmt::format("          cell ({}, {}, {}) at ({}, {}, {}) mm: fast {}, exact {}: {}\n",
-                         d.i, d.j, d.k, mm(g.xc(d.i)), mm(g.yc(d.j)), mm(g.zk(d.k)),
-                         class_code(d.fast), class_code(d.exact), to_string(d.reason));
+      out +=
+          fmt::format("          cell ({}, {}, {}) at ({}, {}, {}) mm: fast {}, exact {}: {}\n",
+                      d.i, d.j, d.k, mm(g.xc(d.i)), mm(g.yc(d.j)), mm(g.zk(d.k)),
+                      detail::cell_code(d.fast), detail::cell_code(d.exact), to_string(d.reason));
     }
     if (r.cells_differing > shown) {
       out += fmt::format("          ... {} more (the JSON report lists {})\n",
@@ -250,8 +241,9 @@ std::string validation_text(const ValidationReport& r) {
     const std::size_t shown = std::min(kListedInText, r.scan_offset.cells.size());
     for (std::size_t q = 0; q < shown; ++q) {
       const OffsetChange& c = r.scan_offset.cells[q];
-      out += fmt::format("          cell ({}, {}, {}): {} with the offset, {} without\n", c.i, c.j,
-                         c.k, class_code(c.with_offset), class_code(c.without_offset));
+      out +=
+          fmt::format("          cell ({}, {}, {}): {} with the offset, {} without\n", c.i, c.j,
+                      c.k, detail::cell_code(c.with_offset), detail::cell_code(c.without_offset));
     }
     if (r.scan_offset.cells_changed > shown) {
       out += fmt::format("          ... {} more\n", thousands(r.scan_offset.cells_changed - shown));

@@ -22,8 +22,9 @@ const char* loop_kind_name(LoopKind kind) {
     case LoopKind::Hole:
       return "hole";
     case LoopKind::Open:
-      return "open";
+      break;
   }
+  // The last case shares the return after the switch: no line is left that no value reaches.
   return "open";
 }
 
@@ -130,6 +131,19 @@ json validation_view(const json& v) {
   return out;
 }
 
+/// The viewer's text before and after its data marker.
+struct TemplateParts {
+  std::string_view before;
+  std::string_view after;
+};
+
+TemplateParts template_parts() {
+  const std::string_view page_template = detail::view_page_template();
+  const std::size_t at = page_template.find(detail::kViewDataMarker);
+  STRATA_ASSERT(at != std::string_view::npos, "the view template holds the data marker");
+  return {page_template.substr(0, at), page_template.substr(at + detail::kViewDataMarker.size())};
+}
+
 }  // namespace
 
 Result<std::string> view_page_data(const ViewPage& page) {
@@ -223,28 +237,25 @@ Result<std::string> view_page_data(const ViewPage& page) {
 }
 
 std::string view_page_with_data(std::string_view data) {
-  const std::string_view page_template = detail::view_page_template();
-  const std::size_t at = page_template.find(detail::kViewDataMarker);
-  STRATA_ASSERT(at != std::string_view::npos, "the view template holds the data marker");
+  const TemplateParts parts = template_parts();
   std::string page;
-  page.reserve(page_template.size() + data.size());
-  page.append(page_template.substr(0, at));
+  page.reserve(parts.before.size() + data.size() + parts.after.size());
+  page.append(parts.before);
   page.append(data);
-  page.append(page_template.substr(at + detail::kViewDataMarker.size()));
+  page.append(parts.after);
   return page;
 }
 
 Result<void> write_view_page(const std::filesystem::path& path, const ViewPage& page) {
   auto data = view_page_data(page);
   if (!data) return data.error();
-  const std::string_view page_template = detail::view_page_template();
-  const std::size_t at = page_template.find(detail::kViewDataMarker);
-  STRATA_ASSERT(at != std::string_view::npos, "the view template holds the data marker");
+  const TemplateParts parts = template_parts();
+  // Written in three pieces: the data of a large stack is not copied into a page string.
   auto out = io::OutputFile::create(path);
   if (!out) return out.error();
-  out->write(page_template.substr(0, at));
+  out->write(parts.before);
   out->write(*data);
-  out->write(page_template.substr(at + detail::kViewDataMarker.size()));
+  out->write(parts.after);
   return out->commit();
 }
 

@@ -450,5 +450,38 @@ TEST(DiagnoseMesh, RejectsOutOfRangeVertexIndex) {
   EXPECT_THROW((void)diagnose_mesh(mesh, TriangleSoup{}), InternalError);
 }
 
+TEST(DiagnoseMesh, ASelfIntersectionSearchCutShortBeforeAnyPairIsAReasonOfItsOwn) {
+  // A closed box whose search may look at no candidate: nothing found, but not shown clean.
+  const MeshReport r = diagnose(unit_box(), DiagnoseOptions{.max_self_intersection_candidates = 0});
+  EXPECT_TRUE(r.self_intersections_truncated);
+  EXPECT_EQ(r.self_intersections.count, 0U);
+  EXPECT_EQ(r.verdict, Verdict::PrintableUnderRule);
+  EXPECT_EQ(r.verdict_reason,
+            "self-intersection search cut short; every edge is balanced, so the nonzero fill rule "
+            "slices it as intended");
+}
+
+TEST(DiagnoseMesh, NearVertexSearchStopsAtItsLimit) {
+  auto facets = unit_box();
+  facets[0][0] = {1e-9, 0, 0};  // near (0, 0, 0), as in the test above
+  const MeshReport r = diagnose(facets, DiagnoseOptions{.max_near_vertex_checks = 0});
+  EXPECT_TRUE(r.near_vertices_truncated);
+  EXPECT_EQ(r.near_vertices.count, 0U);
+}
+
+TEST(DiagnoseMesh, CountsEveryOccurrenceEvenWithoutKeepingALocation) {
+  auto facets = unit_box();
+  facets.pop_back();
+  const MeshReport r = diagnose(facets, DiagnoseOptions{.max_locations = 0});
+  EXPECT_EQ(r.boundary_edges.count, 3U);
+  EXPECT_TRUE(r.boundary_edges.locations.empty());
+}
+
+TEST(DiagnoseMesh, NamesEveryVerdict) {
+  EXPECT_STREQ(verdict_name(Verdict::Printable), "printable");
+  EXPECT_STREQ(verdict_name(Verdict::PrintableUnderRule), "printable-under-rule");
+  EXPECT_STREQ(verdict_name(Verdict::NeedsRepair), "needs-repair");
+}
+
 }  // namespace
 }  // namespace strata::diagnose

@@ -63,5 +63,42 @@ TEST(MeshReportJson, EmptyBoundsAreNull) {
   EXPECT_EQ(j["verdict"], "printable");
 }
 
+TEST(MeshReportJson, CarriesTheLocationsOfEveryKindOfDefect) {
+  MeshReport r;
+  r.normals_checked = true;
+  r.near_vertices = {1, {{{0, 0, 0}, {0, 0, 1e-9}}}};
+  r.non_manifold_vertices = {2, {{1, 2, 3}}};
+  r.degenerate_facets = {1, {4}};
+  r.duplicate_facets = {1, {5}};
+  r.unbalanced_edges = {1, {{{0, 0, 0}, {0, 1, 0}}}};
+  r.inverted_shells = {1, {0}};
+  r.flipped_normals = {1, {6}};
+  r.zero_normals = {1, {7}};
+  r.non_finite_normals = {1, {8}};
+  const auto j = nlohmann::json::parse(mesh_report_json(r));
+  EXPECT_EQ(j.at("near_vertices").at("first"),
+            nlohmann::json::parse("[[[0, 0, 0], [0, 0, 1e-9]]]"));
+  EXPECT_EQ(j.at("non_manifold_vertices"),
+            nlohmann::json::parse(R"({"count": 2, "first": [[1, 2, 3]]})"));
+  EXPECT_EQ(j.at("degenerate_facets").at("first"), nlohmann::json::parse("[4]"));
+  EXPECT_EQ(j.at("duplicate_facets").at("first"), nlohmann::json::parse("[5]"));
+  EXPECT_EQ(j.at("unbalanced_edges").at("first"),
+            nlohmann::json::parse("[[[0, 0, 0], [0, 1, 0]]]"));
+  EXPECT_EQ(j.at("shells").at("inverted"), nlohmann::json::parse(R"({"count": 1, "first": [0]})"));
+  EXPECT_EQ(j.at("stored_normals"), nlohmann::json::parse(R"({
+      "flipped": {"count": 1, "first": [6]}, "zero": {"count": 1, "first": [7]},
+      "non_finite": {"count": 1, "first": [8]}})"));
+}
+
+TEST(MeshReportJson, ListsTheFirstTwentyShells) {
+  MeshReport r;
+  for (FacetIndex s = 0; s < 25; ++s) r.shells.push_back(ShellReport{.first_facet = 4 * s});
+  const auto j = nlohmann::json::parse(mesh_report_json(r));
+  EXPECT_EQ(j.at("shells").at("count"), 25);
+  const auto& first = j.at("shells").at("first");
+  ASSERT_EQ(first.size(), kMaxLocations);
+  EXPECT_EQ(first.back().at("first_facet"), 76);
+}
+
 }  // namespace
 }  // namespace strata::diagnose

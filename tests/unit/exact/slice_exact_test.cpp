@@ -6,7 +6,9 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <new>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -330,6 +332,23 @@ TEST(ExactSliceReport, RepeatedCornerFacetIsRemovedWithoutLeavingTheHalfedgePath
   EXPECT_EQ(r.report.halfedge_layers, 3u);
 }
 
+TEST(ExactSliceReport, ASoupOfNeedlesLeavesNoPolygonMeshAndSaysSo) {
+  IndexedMesh mesh;
+  mesh.vertices = {{0, 0, 0}, {4, 0, 0}, {0, 3, 3}};
+  mesh.triangles = {{0, 0, 1}, {2, 2, 1}};
+  const auto r = run_exact(mesh, *unit_grid(mesh), unit_options());
+  ASSERT_TRUE(r.ok);
+  EXPECT_EQ(r.report.polygons_removed, 2u);
+  EXPECT_FALSE(r.report.polygon_mesh);
+  std::vector<std::string> codes;
+  for (const Diagnostic& d : r.summary.diagnostics) codes.push_back(d.code);
+  EXPECT_NE(std::find(codes.begin(), codes.end(), "exact.not_a_polygon_mesh"), codes.end());
+  for (const std::vector<CellClass>& layer : r.sink.cells) {
+    EXPECT_EQ(std::count(layer.begin(), layer.end(), CellClass::Empty),
+              static_cast<std::ptrdiff_t>(layer.size()));
+  }
+}
+
 TEST(ExactSliceReport, UnweldedCopiesAreMerged) {
   IndexedMesh mesh;
   const IndexedMesh b = box({0, 0, 0}, {2, 2, 2});
@@ -463,6 +482,68 @@ TEST(ExactSliceErrors, VertexIndexOutOfRangeIsBadInput) {
   ASSERT_FALSE(r.has_value());
   EXPECT_EQ(r.error().code, ErrorCode::BadInput);
   EXPECT_NE(r.error().message.find("facet 5"), std::string::npos);
+}
+
+TEST(ExactSliceErrors, NonFiniteCoordinateOnAnyAxisIsBadInput) {
+  for (int axis = 0; axis < 3; ++axis) {
+    IndexedMesh mesh = box({0, 0, 0}, {1, 1, 1});
+    const GridSpec grid = *unit_grid(mesh);
+    Vec3& v = mesh.vertices[0];
+    v = {0, 0, 0};
+    (axis == 0 ? v.x : axis == 1 ? v.y : v.z) = std::numeric_limits<double>::infinity();
+    exact_test::LayerCollector sink;
+    LayerSink* sinks[] = {&sink};
+    auto r = slice_model_exact(mesh, grid, unit_options(), sinks);
+    ASSERT_FALSE(r.has_value()) << axis;
+    EXPECT_EQ(r.error().code, ErrorCode::BadInput);
+    const char* expected[] = {"vertex 0 has a non-finite coordinate (inf, 0, 0)",
+                              "vertex 0 has a non-finite coordinate (0, inf, 0)",
+                              "vertex 0 has a non-finite coordinate (0, 0, inf)"};
+    EXPECT_EQ(r.error().message, expected[axis]);
+  }
+}
+
+/// A sink that fails on its second layer by throwing, and remembers being aborted.
+class ThrowingSink final : public LayerSink {
+ public:
+  explicit ThrowingSink(std::function<void()> fail) : fail_(std::move(fail)) {}
+  Result<void> begin(const SliceRunInfo&) override { return {}; }
+  Result<void> add_layer(const LayerResult&) override {
+    if (++layers_ == 2) fail_();
+    return {};
+  }
+  Result<void> finish() override { return {}; }
+  void abort() noexcept override { aborted = true; }
+  bool aborted = false;
+
+ private:
+  std::function<void()> fail_;
+  int layers_ = 0;
+};
+
+TEST(ExactSliceErrors, AFailureInASinkIsAnInternalErrorOfTheExactPath) {
+  const IndexedMesh mesh = box({0, 0, 0}, {4, 3, 5});
+  ThrowingSink failing([] { throw std::runtime_error("disk full"); });
+  exact_test::LayerCollector other;
+  LayerSink* sinks[] = {&failing, &other};
+  auto r = slice_model_exact(mesh, *unit_grid(mesh), unit_options(), sinks);
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().code, ErrorCode::Internal);
+  EXPECT_EQ(r.error().message, "exact path failed: disk full");
+  EXPECT_TRUE(failing.aborted);
+  EXPECT_TRUE(other.aborted);
+  EXPECT_FALSE(other.finished);
+}
+
+TEST(ExactSliceErrors, RunningOutOfMemoryIsAnInternalErrorOfTheExactPath) {
+  const IndexedMesh mesh = box({0, 0, 0}, {4, 3, 5});
+  ThrowingSink failing([] { throw std::bad_alloc(); });
+  LayerSink* sinks[] = {&failing};
+  auto r = slice_model_exact(mesh, *unit_grid(mesh), unit_options(), sinks);
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().code, ErrorCode::Internal);
+  EXPECT_EQ(r.error().message, "exact path: out of memory");
+  EXPECT_TRUE(failing.aborted);
 }
 
 }  // namespace

@@ -441,5 +441,122 @@ TEST(RepairMesh, RepairsAnEmptySoupToAnEmptySoup) {
   EXPECT_FALSE(r.log.volume_orientation_done);
 }
 
+TEST(RepairMesh, RefusesANonFiniteCoordinateOnEveryAxis) {
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<Triangle> facets = box({0, 0, 0}, {1, 1, 1});
+    double& c = axis == 0 ? facets[5][2].x : axis == 1 ? facets[5][2].y : facets[5][2].z;
+    c = axis == 2 ? -std::numeric_limits<double>::infinity()
+                  : std::numeric_limits<double>::infinity();
+    const auto result = repair_mesh(soup_of(facets));
+    ASSERT_FALSE(result.has_value()) << axis;
+    EXPECT_EQ(result.error().to_string(), "facet 5: a corner has a coordinate that is not finite");
+  }
+}
+
+TEST(RepairMesh, NamesEveryKindOfChange) {
+  EXPECT_STREQ(facet_change_name(FacetChangeKind::RemovedDegenerate), "removed-degenerate");
+  EXPECT_STREQ(facet_change_name(FacetChangeKind::RemovedDuplicate), "removed-duplicate");
+  EXPECT_STREQ(facet_change_name(FacetChangeKind::RemovedCancellingDuplicate),
+               "removed-cancelling-duplicate");
+  EXPECT_STREQ(facet_change_name(FacetChangeKind::SplitAtTJunction), "split-at-t-junction");
+  EXPECT_STREQ(facet_change_name(FacetChangeKind::Flipped), "flipped");
+}
+
+TEST(RepairMesh, OrientsNoVolumeWithoutAClosedShell) {
+  const RepairResult r = repaired(soup_of(
+      joined(without(box({0, 0, 0}, {1, 1, 1}), 0), without(box({3, 0, 0}, {4, 1, 1}), 0))));
+  EXPECT_EQ(r.log.open_shells, 2u);
+  EXPECT_EQ(r.log.closed_shells, 0u);
+  EXPECT_FALSE(r.log.volume_orientation_done);
+  EXPECT_EQ(r.log.volume_orientation_note,
+            "skipped: no closed shell (2 open shells, which bound no volume)");
+}
+
+TEST(RepairMesh, OrientsTheClosedShellsAndLeavesTheOpenOnesAsTheyAre) {
+  const RepairResult r = repaired(soup_of(
+      joined(joined(reversed(box({0, 0, 0}, {1, 1, 1})), without(box({3, 0, 0}, {4, 1, 1}), 0)),
+             without(box({6, 0, 0}, {7, 1, 1}), 0))));
+  EXPECT_EQ(r.log.closed_shells, 1u);
+  EXPECT_EQ(r.log.open_shells, 2u);
+  EXPECT_TRUE(r.log.volume_orientation_done);
+  EXPECT_EQ(r.log.shells_reoriented, 1u);
+  EXPECT_EQ(r.log.facets_flipped_with_shells, 12u);
+  EXPECT_EQ(r.log.volume_orientation_note,
+            "2 open shells left as oriented (an open shell bounds no volume)");
+}
+
+/// The unit box with its corner (1, 1, 1) moved to `corner`.
+std::vector<Triangle> box_with_corner(const Vec3& corner) {
+  std::vector<Triangle> facets = box({0, 0, 0}, {1, 1, 1});
+  for (Triangle& t : facets) {
+    for (Vec3& p : t) {
+      if (p == Vec3{1, 1, 1}) p = corner;
+    }
+  }
+  return facets;
+}
+
+TEST(RepairMesh, JudgesAShellThatCrossesItselfByTheSignOfItsVolume) {
+  // The corner pushed through the bottom face: the shell intersects itself, its volume is 1/6.
+  const std::vector<Triangle> folded = box_with_corner({0.5, 0.5, -0.5});
+  const RepairResult kept = repaired(soup_of(folded));
+  EXPECT_EQ(kept.log.shells_reoriented, 0u);
+  EXPECT_EQ(kept.soup.triangles, folded);
+  const RepairResult turned = repaired(soup_of(reversed(folded)));
+  EXPECT_EQ(turned.log.shells_reoriented, 1u);
+  EXPECT_EQ(turned.log.facets_flipped_with_shells, 12u);
+  EXPECT_EQ(turned.soup.triangles, folded);
+}
+
+TEST(RepairMesh, LeavesAShellThatCrossesItselfWithoutVolumeAsItIs) {
+  // Pushed further, to z = -1, the two parts of the shell have opposite volumes that cancel.
+  const std::vector<Triangle> folded = reversed(box_with_corner({0.5, 0.5, -1}));
+  const RepairResult r = repaired(soup_of(folded));
+  EXPECT_TRUE(r.log.volume_orientation_done);
+  EXPECT_EQ(r.log.shells_reoriented, 0u);
+  EXPECT_EQ(r.soup.triangles, folded);
+}
+
+TEST(RepairMesh, ListsTheChangesOfOneFacetInTheOrderTheStepsRan) {
+  // The front facet that runs past M, turned over: it is split at M, then its pieces flipped.
+  std::vector<Triangle> facets = box_with_t_junction();
+  facets[5] = reversed(facets[5]);
+  const RepairResult r = repaired(soup_of(facets));
+  EXPECT_EQ(r.log.t_junctions_closed, 1u);
+  EXPECT_EQ(r.log.facets_flipped, 1u);
+  std::vector<FacetChangeKind> of_facet_5;
+  for (const FacetChange& c : r.log.changes) {
+    if (c.facet == 5) of_facet_5.push_back(c.kind);
+  }
+  EXPECT_EQ(of_facet_5, (std::vector<FacetChangeKind>{FacetChangeKind::SplitAtTJunction,
+                                                      FacetChangeKind::Flipped}));
+  const auto after = diagnose_soup(r.soup);
+  EXPECT_EQ(after.volume_mm3, 8.0);
+  EXPECT_EQ(after.verdict, diagnose::Verdict::Printable) << after.verdict_reason;
+}
+
+TEST(RepairMesh, RemovesFacetsThatRepeatACornerWhereverItIsRepeated) {
+  const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0};
+  const std::vector<Triangle> box_facets = box({0, 0, 0}, {1, 1, 1});
+  const std::vector<Triangle> needles = {{a, a, b}, {a, b, b}, {c, b, c}};
+  const RepairResult r = repaired(soup_of(joined(box_facets, needles)));
+  EXPECT_EQ(r.log.degenerate_facets_removed, 3u);
+  EXPECT_EQ(r.soup.triangles, box_facets);
+  EXPECT_EQ(r.log.changes.size(), 3u);
+  for (const FacetChange& change : r.log.changes) {
+    EXPECT_GE(change.facet, 12u);
+    EXPECT_EQ(change.kind, FacetChangeKind::RemovedDegenerate);
+  }
+}
+
+TEST(RepairMesh, LeavesATJunctionCrackOpenWhenAsked) {
+  const TriangleSoup input = soup_of(box_with_t_junction());
+  const auto result = repair_mesh(input, RepairOptions{.close_t_junctions = false});
+  ASSERT_TRUE(result.has_value()) << result.error().to_string();
+  EXPECT_EQ(result->log.t_junctions_closed, 0u);
+  EXPECT_EQ(result->log.output_facets, 13u);
+  EXPECT_EQ(diagnose_soup(result->soup).boundary_edges.count, 3u);
+}
+
 }  // namespace
 }  // namespace strata::repair

@@ -134,5 +134,16 @@ TEST(HausdorffDistance, IsZeroForTwoEmptySetsAndInfiniteForOne) {
   EXPECT_EQ(hausdorff_distance(none, one), std::numeric_limits<double>::infinity());
 }
 
+TEST(SameLoopEdges, LeavesOutClosedLoopsOfOnePointAndZeroLengthEdges) {
+  const std::vector<Contour> a = {square(0, 0, 2), loop({{5, 5}})};
+  const std::vector<Contour> b = {loop({{0, 0}, {2, 0}, {2, 0}, {2, 2}, {0, 2}})};
+  EXPECT_TRUE(same_loop_edges(a, b));
+  const SymmetricDifference d = symmetric_difference(a, b, FillRule::NonZero);
+  EXPECT_EQ(d.method, AreaMethod::Identical);
+  EXPECT_EQ(d.area_mm2, 0.0);
+  EXPECT_EQ(d.area_a_mm2, 4.0);
+  EXPECT_EQ(d.area_b_mm2, 4.0);
+}
+
 }  // namespace
 }  // namespace strata::validate

@@ -3,9 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "strata/io/read_mesh.hpp"
 #include "strata/mesh/primitive_models.hpp"
@@ -222,6 +225,134 @@ TEST(ReferenceSlicer, WritesItsSectionInTheJsonReport) {
   EXPECT_EQ(ref.at("layers").size(), r.grid.nz);
   EXPECT_NE(validation_text(r).find("reference slicer (CGAL Polygon_mesh_slicer"),
             std::string::npos);
+}
+
+TEST(ReferenceSlicer, RefusesAModelWhoseFacetsAllRepeatACorner) {
+  IndexedMesh needles;
+  needles.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 1}};
+  needles.triangles = {{0, 1, 1}, {2, 2, 0}};
+  const detail::ReferenceSlicer slicer(needles, 100);
+  EXPECT_FALSE(slicer.ready());
+  EXPECT_EQ(slicer.figures().skipped, ReferenceSkip::Empty);
+  EXPECT_EQ(slicer.figures().reason, "no facet with three distinct corners");
+  EXPECT_EQ(slicer.figures().degenerate_facets_dropped, 2u);
+  EXPECT_EQ(slicer.figures().facets, 2u);
+}
+
+TEST(ReferenceSlicer, LeavesOutAFacetWithARepeatedCornerAndSlicesTheRest) {
+  IndexedMesh m = box_mesh({0, 0, 0}, {2, 2, 2});
+  m.triangles.push_back({0, 1, 1});
+  const ValidationReport r = validate(m, cells_of(1.0));
+  ASSERT_TRUE(r.reference.ran) << r.reference.reason;
+  EXPECT_EQ(r.reference.degenerate_facets_dropped, 1u);
+  EXPECT_EQ(r.reference.facets, 13u);
+  EXPECT_EQ(r.reference.layers_differing_exact, 0u);
+  EXPECT_NE(validation_text(r).find("; 1 facets with a repeated corner left out"),
+            std::string::npos)
+      << validation_text(r);
+}
+
+TEST(ReferenceSlicer, OverlaysOnlyEveryNthLayerThatDiffersAtRoundingLevel) {
+  // The fast path's points differ from the exact ones by rounding: with a budget of one overlay
+  // only layer 0 is overlaid among the layers that differ that little.
+  const IndexedMesh sphere = weld_vertices(mesh::make_sphere(10.0, 3));
+  ValidateOptions vopts;
+  vopts.max_overlay_layers = 1;
+  const ValidationReport r = validate(sphere, cells_of(0.7, std::nullopt), vopts);
+  const ReferenceSlicerFigures& f = r.reference;
+  ASSERT_TRUE(f.ran) << f.reason;
+  EXPECT_GT(f.layers_overlay_skipped, 0u);
+  std::uint32_t skipped = 0;
+  for (const ReferenceLayerComparison& l : f.layers) {
+    if (l.area_method_fast != AreaMethod::NotCompared) continue;
+    ++skipped;
+    EXPECT_NE(l.layer, 0u);
+    EXPECT_LE(l.hausdorff_fast_mm, 1e-9 * diagonal(sphere));
+    EXPECT_FALSE(l.differs_from_fast);
+  }
+  for (const ReferenceLayerComparison& l : f.layers) {
+    if (l.area_method_exact == AreaMethod::NotCompared) ++skipped;
+  }
+  EXPECT_EQ(skipped, f.layers_overlay_skipped);
+  EXPECT_EQ(f.layers_differing_fast, 0u);
+}
+
+/// A roof over the square [-1, 1]^2 (base z = 0) whose top is a cross of four ridges at z = 1,
+/// from the centre (0, 0) to the middle of each side: a closed 2-manifold of 14 facets.
+IndexedMesh cross_roof() {
+  IndexedMesh m;
+  m.vertices = {{0, 0, 1}, {1, 0, 1},  {0, 1, 1},   {-1, 0, 1}, {0, -1, 1},
+                {1, 1, 0}, {-1, 1, 0}, {-1, -1, 0}, {1, -1, 0}};
+  m.triangles = {{0, 1, 5}, {0, 5, 2}, {0, 2, 6}, {0, 6, 3}, {0, 3, 7}, {0, 7, 4}, {0, 4, 8},
+                 {0, 8, 1}, {8, 5, 1}, {5, 6, 2}, {6, 7, 3}, {7, 8, 4}, {5, 7, 6}, {5, 8, 7}};
+  return m;
+}
+
+TEST(ReferenceSlicer, KeepsTheRidgesInTheTopPlaneAsOpenChains) {
+  // CGAL gives the four ridges, cut at the centre where they meet, each towards the centre: no
+  // chain starts where another ends, so all four stay open.
+  const detail::ReferenceSlicer slicer(cross_roof(), 100);
+  ASSERT_TRUE(slicer.ready()) << slicer.figures().reason;
+  const detail::ReferenceSection top = slicer.slice(1.0);
+  EXPECT_EQ(top.open_polylines, 4u);
+  EXPECT_EQ(top.closed_polylines, 0u);
+  EXPECT_EQ(top.open_after_joining, 4u);
+  std::vector<std::vector<Point2>> chains;
+  for (const Contour& c : top.contours) {
+    EXPECT_EQ(c.kind, LoopKind::Open);
+    chains.push_back(c.points);
+  }
+  std::sort(chains.begin(), chains.end(), [](const auto& a, const auto& b) {
+    return std::tie(a[0].x, a[0].y) < std::tie(b[0].x, b[0].y);
+  });
+  EXPECT_EQ(chains, (std::vector<std::vector<Point2>>{
+                        {{-1, 0}, {0, 0}}, {{0, -1}, {0, 0}}, {{0, 1}, {0, 0}}, {{1, 0}, {0, 0}}}));
+  EXPECT_EQ(slicer.vertices_on_plane(1.0), 5u);
+  EXPECT_FALSE(slicer.facet_on_plane(1.0));
+  const detail::ReferenceSection middle = slicer.slice(0.5);
+  EXPECT_EQ(middle.closed_polylines, 1u);
+  ASSERT_EQ(middle.contours.size(), 1u);
+  EXPECT_EQ(middle.contours[0].points.size(), 12u);
+  EXPECT_EQ(middle.contours[0].kind, LoopKind::Outer);
+  EXPECT_DOUBLE_EQ(middle.contours[0].signed_area_mm2, 3.0);
+}
+
+TEST(JoinChains, ClosesChainsThatFollowEachOther) {
+  detail::ReferenceSection out;
+  detail::join_chains({{{0, 1}, {0, 0}}, {{0, 0}, {1, 0}}, {{1, 0}, {1, 1}, {0, 1}}}, out);
+  ASSERT_EQ(out.contours.size(), 1u);
+  const Contour& c = out.contours[0];
+  EXPECT_TRUE(c.is_closed);
+  EXPECT_EQ(c.points, (std::vector<Point2>{{0, 1}, {0, 0}, {1, 0}, {1, 1}}));
+  EXPECT_EQ(c.kind, LoopKind::Outer);
+  EXPECT_DOUBLE_EQ(c.signed_area_mm2, 1.0);
+  EXPECT_EQ(out.open_after_joining, 0u);
+}
+
+TEST(JoinChains, GivesAClockwiseLoopAsAHole) {
+  detail::ReferenceSection out;
+  detail::join_chains({{{0, 0}, {0, 2}, {2, 2}}, {{2, 2}, {2, 0}, {0, 0}}}, out);
+  ASSERT_EQ(out.contours.size(), 1u);
+  EXPECT_EQ(out.contours[0].kind, LoopKind::Hole);
+  EXPECT_DOUBLE_EQ(out.contours[0].signed_area_mm2, -4.0);
+}
+
+TEST(JoinChains, JoinsToTheFirstChainStartingThereAndLeavesTheRestOpen) {
+  detail::ReferenceSection out;
+  detail::join_chains({{{0, 0}, {1, 0}},
+                       {{1, 0}, {1, 1}, {0, 0}},
+                       {{1, 0}, {2, 0}},
+                       {{5, 5}, {6, 6}},
+                       {{6, 6}, {7, 7}}},
+                      out);
+  ASSERT_EQ(out.contours.size(), 3u);
+  EXPECT_TRUE(out.contours[0].is_closed);
+  EXPECT_EQ(out.contours[0].points, (std::vector<Point2>{{0, 0}, {1, 0}, {1, 1}}));
+  EXPECT_FALSE(out.contours[1].is_closed);
+  EXPECT_EQ(out.contours[1].kind, LoopKind::Open);
+  EXPECT_EQ(out.contours[1].points, (std::vector<Point2>{{1, 0}, {2, 0}}));
+  EXPECT_EQ(out.contours[2].points, (std::vector<Point2>{{5, 5}, {6, 6}, {7, 7}}));
+  EXPECT_EQ(out.open_after_joining, 2u);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 
 #include "strata/mesh/primitive_models.hpp"
@@ -108,6 +109,25 @@ TEST(ValidateModel, RefusesTheWindingRule) {
   const auto r = validate_model(m, grid, options);
   ASSERT_FALSE(r.has_value());
   EXPECT_EQ(r.error().code, ErrorCode::Usage);
+}
+
+TEST(ValidateModel, StopsWithAnInternalErrorWhenTheComparisonFails) {
+  // The progress callback runs inside the comparison of each layer pair; its failure stops both
+  // paths, and the report is replaced by the error.
+  const IndexedMesh mesh = box_mesh({0, 0, 0}, {6, 4, 3});
+  const GridSpec grid = make_grid(mesh.bounds(), unit_cells().grid).value();
+  ValidateOptions validate_options;
+  validate_options.window_layers = 1;
+  std::uint32_t calls = 0;
+  validate_options.progress = [&](std::uint32_t, std::uint32_t) {
+    ++calls;
+    throw std::runtime_error("progress display closed");
+  };
+  const auto report = validate_model(mesh, grid, unit_cells(), validate_options);
+  ASSERT_FALSE(report.has_value());
+  EXPECT_EQ(report.error().code, ErrorCode::Internal);
+  EXPECT_EQ(report.error().message, "comparing layers: progress display closed");
+  EXPECT_EQ(calls, 1u);
 }
 
 TEST(ValidationJson, SaysTheCellsAgree) {

@@ -133,5 +133,73 @@ TEST(FitToBudget, ThenKeepsEveryNthLayerAndSaysSo) {
   EXPECT_NE(stack.notes.back().find("of 10"), std::string::npos);
 }
 
+TEST(ViewStackCollector, ForgetsTheLayersWhenTheRunIsAborted) {
+  ViewStackCollector sink;
+  feed(sink, run_on(5, 3, 2));
+  sink.abort();
+  const ViewStack stack = sink.take();
+  EXPECT_TRUE(stack.stored.empty());
+  EXPECT_TRUE(stack.cells_zlib.empty());
+  EXPECT_TRUE(stack.volume.blocks.empty());
+}
+
+TEST(ViewStackCollector, LeavesOutContoursAndScanlinesWhenAskedTo) {
+  ViewStackCollector sink(ViewStackOptions{.hatches = false, .contours = false});
+  feed(sink, run_on(5, 3, 2), 2);
+  const ViewStack stack = sink.take();
+  EXPECT_FALSE(stack.has_hatches);
+  ASSERT_EQ(stack.contours.size(), 2u);
+  EXPECT_TRUE(stack.contours[0].empty());
+  EXPECT_TRUE(stack.hatches[0].empty());
+}
+
+/// `layers` stored layers of 3 compressed bytes each (7 bytes of page text with their quotes and
+/// comma), no contours, no scanlines.
+ViewStack stack_of(std::uint32_t layers) {
+  ViewStack stack;
+  stack.grid.nz = layers;
+  for (std::uint32_t k = 0; k < layers; ++k) {
+    stack.stored.push_back(k);
+    stack.cells_zlib.emplace_back("abc");
+    stack.contours.emplace_back();
+    stack.hatches.emplace_back();
+  }
+  stack.has_hatches = false;
+  return stack;
+}
+
+TEST(FitToBudget, NamesTheStrideAsAnOrdinal) {
+  // 30 layers take 210 bytes: a budget of 210 / n keeps every n-th layer.
+  const struct {
+    std::uint64_t budget;
+    const char* words;
+  } cases[] = {
+      {105, "every 2nd layer (15 of 30)"}, {70, "every 3rd layer (10 of 30)"},
+      {53, "every 4th layer (8 of 30)"},   {20, "every 11th layer (3 of 30)"},
+      {10, "every 21st layer (2 of 30)"},
+  };
+  for (const auto& c : cases) {
+    ViewStack stack = stack_of(30);
+    fit_to_budget(stack, c.budget);
+    ASSERT_EQ(stack.notes.size(), 1u) << c.budget;
+    EXPECT_NE(stack.notes[0].find(c.words), std::string::npos) << stack.notes[0];
+  }
+  ViewStack stack = stack_of(30);
+  fit_to_budget(stack, 10);
+  EXPECT_EQ(stack.notes[0],
+            "subsampled stack: the page holds every 21st layer (2 of 30) to stay within its 0.0 MB "
+            "budget (all layers would take 0.0 MB); the cells file has every layer");
+  EXPECT_EQ(stack.stored, (std::vector<std::uint32_t>{0, 21}));
+  EXPECT_EQ(stack.stride, 21u);
+}
+
+TEST(FitToBudget, KeepsTheOnlyLayerEvenOverBudget) {
+  ViewStack stack = stack_of(1);
+  fit_to_budget(stack, 1);
+  EXPECT_EQ(stack.stored.size(), 1u);
+  EXPECT_EQ(stack.stride, 1u);
+  EXPECT_TRUE(stack.notes.empty());
+}
+
 }  // namespace
 }  // namespace strata::view

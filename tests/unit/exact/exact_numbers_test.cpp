@@ -1,0 +1,100 @@
+// The one rounding of the exact path: to the nearest double, ties to even, below the normal range
+// too; and the comparisons that fall back to the exact value when the doubles tie.
+
+// The library is compiled with CGAL's configuration, CGAL_USE_GMPXX, under which the exact
+// module's Rational is GMP's mpq_class; this file passes the module's own types across, so it
+// must see the same type.
+#ifndef CGAL_USE_GMPXX
+#define CGAL_USE_GMPXX 1
+#endif
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include "exact/exact_numbers_internal.hpp"
+
+namespace strata::exact::detail {
+namespace {
+
+static_assert(std::is_same_v<Rational, mpq_class>, "the library's exact number type");
+
+constexpr double kMinSubnormal = std::numeric_limits<double>::denorm_min();  // 2^-1074
+
+/// n * 2^-e, exactly.
+mpq_class scaled(long n, unsigned long e) {
+  mpq_class q(n);
+  mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), e);
+  return q;
+}
+
+double rounded(const mpq_class& q) { return round_to_double(q.get_mpq_t()); }
+
+TEST(RoundToDouble, GivesZeroForZero) { EXPECT_EQ(rounded(mpq_class(0)), 0.0); }
+
+TEST(RoundToDouble, RoundsOneThirdToNearest) {
+  EXPECT_EQ(rounded(mpq_class(1, 3)), 1.0 / 3.0);
+  EXPECT_EQ(rounded(mpq_class(-2, 3)), -2.0 / 3.0);
+}
+
+TEST(RoundToDouble, KeepsASubnormalThatIsADouble) {
+  EXPECT_EQ(rounded(scaled(1, 1074)), kMinSubnormal);
+  EXPECT_EQ(rounded(scaled(-5, 1074)), -5 * kMinSubnormal);
+}
+
+TEST(RoundToDouble, RoundsBelowTheNormalRangeToTheNearestSubnormal) {
+  // 1.25 and 1.75 times the smallest subnormal: down to 1, up to 2 of them.
+  EXPECT_EQ(rounded(scaled(5, 1076)), kMinSubnormal);
+  EXPECT_EQ(rounded(scaled(7, 1076)), 2 * kMinSubnormal);
+  EXPECT_EQ(rounded(scaled(-5, 1076)), -kMinSubnormal);
+  EXPECT_EQ(rounded(scaled(-7, 1076)), -2 * kMinSubnormal);
+}
+
+TEST(RoundToDouble, BreaksTiesBelowTheNormalRangeToEven) {
+  // 1.5 of the smallest subnormal lies between 1 (odd) and 2 (even) of them; 2.5 between 2 and 3.
+  EXPECT_EQ(rounded(scaled(3, 1075)), 2 * kMinSubnormal);
+  EXPECT_EQ(rounded(scaled(5, 1075)), 2 * kMinSubnormal);
+  EXPECT_EQ(rounded(scaled(-3, 1075)), -2 * kMinSubnormal);
+  // Half the smallest subnormal ties between 0 (even) and it.
+  EXPECT_EQ(rounded(scaled(1, 1075)), 0.0);
+}
+
+TEST(RoundToDouble, RoundsJustAboveTheNormalRangesLowerEndOnce) {
+  const double smallest_normal = std::numeric_limits<double>::min();  // 2^-1022
+  EXPECT_EQ(rounded(scaled(1, 1022)), smallest_normal);
+  // 2^-1022 (1 + 2^-53): a tie between 2^-1022 (even) and its successor.
+  mpq_class tie = scaled(1, 1022) + scaled(1, 1075);
+  EXPECT_EQ(rounded(tie), smallest_normal);
+}
+
+TEST(CompareWithDouble, DecidesByTheExactValueWhenTheRoundedOneTies) {
+  const RoundedRational above(Rational(1) + Rational(scaled(1, 60)));
+  const RoundedRational below(Rational(1) - Rational(scaled(1, 60)));
+  ASSERT_EQ(above.rounded, 1.0);
+  ASSERT_EQ(below.rounded, 1.0);
+  EXPECT_EQ(compare_with_double(above, 1.0), 1);
+  EXPECT_EQ(compare_with_double(below, 1.0), -1);
+  EXPECT_EQ(compare_with_double(RoundedRational(Rational(1)), 1.0), 0);
+  EXPECT_EQ(compare_with_double(above, 2.0), -1);
+  EXPECT_EQ(compare_with_double(above, 0.5), 1);
+}
+
+TEST(CompareXy, ComparesXThenYExactly) {
+  const auto point = [](const mpq_class& x, const mpq_class& y) {
+    return ExactPoint2{RoundedRational(Rational(x)), RoundedRational(Rational(y))};
+  };
+  const mpq_class one(1);
+  const mpq_class one_up = one + scaled(1, 60);  // rounds to 1, like `one`
+  EXPECT_EQ(compare_xy(point(one, 0), point(2, 0)), -1);
+  EXPECT_EQ(compare_xy(point(2, 0), point(one, 5)), 1);
+  EXPECT_EQ(compare_xy(point(one, 0), point(one_up, 0)), -1);
+  EXPECT_EQ(compare_xy(point(one_up, 0), point(one, 0)), 1);
+  EXPECT_EQ(compare_xy(point(one, one), point(one, one_up)), -1);
+  EXPECT_EQ(compare_xy(point(one, one_up), point(one, one)), 1);
+  EXPECT_EQ(compare_xy(point(one, 3), point(one, 3)), 0);
+}
+
+}  // namespace
+}  // namespace strata::exact::detail

@@ -1,0 +1,330 @@
+// The view page's data (web/DATA.md): the model's defects, the layers, the validation marks, the
+// refusals of reports that are not JSON, and the page written around it.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "strata/view/view_page.hpp"
+#include "support/read_file.hpp"
+#include "support/temp_dir.hpp"
+#include "view/encode_internal.hpp"
+
+namespace strata::view {
+namespace {
+
+using nlohmann::json;
+
+json data_of(const ViewPage& page) {
+  const Result<std::string> data = view_page_data(page);
+  EXPECT_TRUE(data.has_value()) << data.error().to_string();
+  return data ? json::parse(*data) : json();
+}
+
+/// Two triangles: (0,0,0) (1,0,0) (0,1,0) and (1,0,0) (1,1,0) (0,1,0).
+IndexedMesh two_triangles() {
+  IndexedMesh mesh;
+  mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
+  return mesh;
+}
+
+std::string b64_floats(const std::vector<float>& values) {
+  return detail::base64(detail::as_bytes(values));
+}
+
+TEST(ViewPageData, WritesTheHeaderOfAnEmptyPage) {
+  ViewPage page;
+  page.title = "ring";
+  page.source_kind = "model";
+  page.source_path = "data/ring.stl";
+  page.notes = {"first"};
+  page.stack.notes = {"second"};
+  page.stack.grid = GridSpec{-1, -2, 0, 0.5, 0.25, 0.125, 4, 3, 2};
+  page.stack.shell_mm = 0.5;
+  const json j = data_of(page);
+  EXPECT_EQ(j.at("format"), "strata-view");
+  EXPECT_EQ(j.at("version"), 1);
+  EXPECT_EQ(j.at("title"), "ring");
+  EXPECT_EQ(j.at("source"), json::parse(R"({"kind": "model", "path": "data/ring.stl"})"));
+  EXPECT_EQ(j.at("notes"), json::parse(R"(["first", "second"])"));
+  EXPECT_EQ(j.at("grid"), json::parse(R"({"nx": 4, "ny": 3, "nz": 2, "x0": -1, "y0": -2, "z0": 0,
+                                          "dx": 0.5, "dy": 0.25, "dz": 0.125})"));
+  EXPECT_EQ(j.at("shell_mm"), 0.5);
+  EXPECT_TRUE(j.at("report").is_null());
+  EXPECT_TRUE(j.at("mesh").is_null());
+  EXPECT_TRUE(j.at("check").is_null());
+  EXPECT_TRUE(j.at("volume").is_null()) << "a model checked, not sliced";
+  EXPECT_TRUE(j.at("validation").is_null());
+  EXPECT_EQ(j.at("layers"), json::parse(R"({"encoding": "2bit-msb-zlib", "stored": [],
+      "stride": 1, "cells": [], "contours": [], "hatches": null})"));
+}
+
+TEST(ViewPageData, EscapesTheEndOfAScriptElement) {
+  ViewPage page;
+  page.title = "a</script><b";
+  const Result<std::string> data = view_page_data(page);
+  ASSERT_TRUE(data.has_value());
+  EXPECT_EQ(data->find("</"), std::string::npos) << *data;
+  EXPECT_NE(data->find(R"("title":"a<\/script><b")"), std::string::npos) << *data;
+  EXPECT_EQ(json::parse(*data).at("title"), "a</script><b");
+}
+
+TEST(ViewPageData, ReplacesInvalidUtf8InANameInsteadOfRefusingIt) {
+  ViewPage page;
+  page.source_path = "models/\xff.stl";
+  EXPECT_EQ(data_of(page).at("source").at("path"), "models/\xef\xbf\xbd.stl");
+}
+
+TEST(ViewPageData, EmbedsTheSliceReport) {
+  ViewPage page;
+  page.report_json = R"({"layers": 3})";
+  EXPECT_EQ(data_of(page).at("report"), json::parse(R"({"layers": 3})"));
+}
+
+TEST(ViewPageData, RefusesASliceReportThatIsNotJson) {
+  ViewPage page;
+  page.source_path = "out/ring-strata";
+  page.report_json = "{\"layers\": ";
+  const Result<std::string> data = view_page_data(page);
+  ASSERT_FALSE(data.has_value());
+  EXPECT_EQ(data.error().code, ErrorCode::BadInput);
+  EXPECT_EQ(data.error().to_string(), "out/ring-strata: the slice report is not JSON");
+}
+
+TEST(ViewPageData, RefusesAValidationReportThatIsNotJson) {
+  ViewPage page;
+  page.source_path = "out/ring-strata";
+  page.validation_json = "verdict: agree";
+  const Result<std::string> data = view_page_data(page);
+  ASSERT_FALSE(data.has_value());
+  EXPECT_EQ(data.error().code, ErrorCode::BadInput);
+  EXPECT_EQ(data.error().to_string(), "out/ring-strata: the validation report is not JSON");
+}
+
+TEST(ViewPageData, EncodesTheDisplayMesh) {
+  ViewPage page;
+  DisplayMesh mesh;
+  mesh.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  mesh.indices = {0, 1, 2};
+  mesh.facets_in_model = 10;
+  mesh.simplified = true;
+  page.mesh = mesh;
+  const json m = data_of(page).at("mesh");
+  EXPECT_EQ(m.at("facets_in_model"), 10);
+  EXPECT_EQ(m.at("facets_shown"), 1);
+  EXPECT_TRUE(m.at("simplified").get<bool>());
+  EXPECT_EQ(m.at("positions"), b64_floats(mesh.positions));
+  EXPECT_EQ(m.at("indices"), detail::base64(detail::as_bytes(mesh.indices)));
+}
+
+diagnose::MeshReport report_with_every_defect() {
+  diagnose::MeshReport r;
+  r.verdict = diagnose::Verdict::NeedsRepair;
+  r.verdict_reason = "1 open edge in 1 loop";
+  r.num_facets = 2;
+  r.shells.resize(1);
+  r.self_intersections_checked = true;
+  r.boundary_edges = {3, {{{0, 0, 0}, {1, 0, 0}}}};  // three found, one located
+  r.non_manifold_edges = {1, {{{1, 0, 0}, {0, 1, 0}}}};
+  r.inconsistent_edges = {1, {{{1, 1, 0}, {0, 1, 0}}}};
+  r.degenerate_facets = {2, {1, 7}};  // facet 7 is not in the mesh: not drawn
+  r.flipped_normals = {1, {0}};
+  r.self_intersections = {1, {{0, 1}}};
+  r.non_manifold_vertices = {1, {{1, 0, 0}}};
+  return r;
+}
+
+TEST(ViewPageData, DrawsEveryDefectOfTheCheckOnTheModel) {
+  const IndexedMesh mesh = two_triangles();
+  ViewPage page;
+  page.check = report_with_every_defect();
+  page.model_mesh = &mesh;
+  const json check = data_of(page).at("check");
+  EXPECT_EQ(check.at("verdict"), "needs-repair");
+  EXPECT_EQ(check.at("reason"), "1 open edge in 1 loop");
+  EXPECT_TRUE(check.at("self_intersections_checked").get<bool>());
+  EXPECT_EQ(check.at("facets"), 2);
+  EXPECT_EQ(check.at("shells"), 1);
+  const std::vector<float> first = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const std::vector<float> second = {1, 0, 0, 1, 1, 0, 0, 1, 0};
+  std::vector<float> both = first;
+  both.insert(both.end(), second.begin(), second.end());
+  const json expected = {
+      {{"kind", "open_edges"},
+       {"label", "open edges"},
+       {"count", 3},
+       {"shape", "segments"},
+       {"data", b64_floats({0, 0, 0, 1, 0, 0})},
+       {"shown", 1}},
+      {{"kind", "non_manifold_edges"},
+       {"label", "non-manifold edges"},
+       {"count", 1},
+       {"shape", "segments"},
+       {"data", b64_floats({1, 0, 0, 0, 1, 0})},
+       {"shown", 1}},
+      {{"kind", "inconsistent_edges"},
+       {"label", "edges of flipped neighbours"},
+       {"count", 1},
+       {"shape", "segments"},
+       {"data", b64_floats({1, 1, 0, 0, 1, 0})},
+       {"shown", 1}},
+      {{"kind", "degenerate_facets"},
+       {"label", "degenerate facets"},
+       {"count", 2},
+       {"shape", "triangles"},
+       {"data", b64_floats(second)},
+       {"shown", 1}},
+      {{"kind", "flipped_normals"},
+       {"label", "facets against their stored normal"},
+       {"count", 1},
+       {"shape", "triangles"},
+       {"data", b64_floats(first)},
+       {"shown", 1}},
+      {{"kind", "self_intersections"},
+       {"label", "self-intersecting facets"},
+       {"count", 1},
+       {"shape", "triangles"},
+       {"data", b64_floats(both)},
+       {"shown", 2}},
+      {{"kind", "non_manifold_vertices"},
+       {"label", "non-manifold vertices"},
+       {"count", 1},
+       {"shape", "points"},
+       {"data", b64_floats({1, 0, 0})},
+       {"shown", 1}},
+  };
+  EXPECT_EQ(check.at("defects"), expected);
+}
+
+TEST(ViewPageData, DrawsOnlyTheEdgeAndVertexDefectsWithoutTheModel) {
+  ViewPage page;
+  page.check = report_with_every_defect();
+  const json defects = data_of(page).at("check").at("defects");
+  std::vector<std::string> kinds;
+  for (const json& d : defects) kinds.push_back(d.at("kind"));
+  EXPECT_EQ(kinds, (std::vector<std::string>{"open_edges", "non_manifold_edges",
+                                             "inconsistent_edges", "non_manifold_vertices"}));
+}
+
+TEST(ViewPageData, ListsNoDefectOfACleanModel) {
+  const IndexedMesh mesh = two_triangles();
+  ViewPage page;
+  page.check = diagnose::MeshReport{};
+  page.model_mesh = &mesh;
+  const json check = data_of(page).at("check");
+  EXPECT_EQ(check.at("verdict"), "printable");
+  EXPECT_TRUE(check.at("defects").empty());
+}
+
+ViewStack two_layer_stack(bool hatches) {
+  ViewStack s;
+  s.grid = GridSpec{0, 0, 0, 1, 1, 1, 2, 2, 4};
+  s.stored = {0, 2};
+  s.stride = 2;
+  s.cells_zlib = {"\x01\x02", "\x03"};
+  s.contours = {{ViewLoop{LoopKind::Outer, {0, 0, 1, 0, 1, 1}}, ViewLoop{LoopKind::Hole, {0.5f}}},
+                {ViewLoop{LoopKind::Open, {2, 2}}}};
+  s.has_hatches = hatches;
+  s.hatches = {{0, 0.5f, 1, 0.5f}, {}};
+  s.volume.nx = 1;
+  s.volume.ny = 1;
+  s.volume.nz = 2;
+  s.volume.bz = 2;
+  s.volume.blocks = {3, 1};
+  return s;
+}
+
+TEST(ViewPageData, EncodesTheStoredLayersAndTheVolume) {
+  ViewPage page;
+  page.stack = two_layer_stack(true);
+  const json j = data_of(page);
+  const json& layers = j.at("layers");
+  EXPECT_EQ(layers.at("stored"), json::parse("[0, 2]"));
+  EXPECT_EQ(layers.at("stride"), 2);
+  EXPECT_EQ(layers.at("cells"), json({detail::base64("\x01\x02"), detail::base64("\x03")}));
+  const json contours = {
+      {{{"kind", "outer"}, {"points", b64_floats({0, 0, 1, 0, 1, 1})}},
+       {{"kind", "hole"}, {"points", b64_floats({0.5f})}}},
+      {{{"kind", "open"}, {"points", b64_floats({2, 2})}}},
+  };
+  EXPECT_EQ(layers.at("contours"), contours);
+  EXPECT_EQ(layers.at("hatches"), json({b64_floats({0, 0.5f, 1, 0.5f}), b64_floats({})}));
+  const json& volume = j.at("volume");
+  EXPECT_EQ(volume.at("nx"), 1);
+  EXPECT_EQ(volume.at("nz"), 2);
+  EXPECT_EQ(volume.at("bz"), 2);
+  EXPECT_EQ(volume.at("data"), detail::base64(detail::zlib_compress(std::string("\x03\x01", 2))));
+}
+
+TEST(ViewPageData, WritesNoHatchesWhenTheStackLeftThemOut) {
+  ViewPage page;
+  page.stack = two_layer_stack(false);
+  EXPECT_TRUE(data_of(page).at("layers").at("hatches").is_null());
+}
+
+TEST(ViewPageData, MarksTheCellsAndLayersTheValidationFoundDiffering) {
+  ViewPage page;
+  page.validation_json = R"({"cells": {"compared": 24, "differing": 4, "differences": [
+      {"i": 1, "j": 2, "k": 3, "fast": "11", "exact": "01"},
+      {"i": 0, "j": 0, "k": 1, "fast": "01", "exact": "00"},
+      {"i": 1, "j": 0, "k": 3, "fast": "10", "exact": 3},
+      {"k": 1}]}})";
+  EXPECT_EQ(data_of(page).at("validation"), json::parse(R"({"cells_compared": 24,
+      "cells_differing": 4, "layers_differing": [1, 3],
+      "cells": [[1, 2, 3, 3, 1], [0, 0, 1, 1, 0], [1, 0, 3, 0, 0], [0, 0, 1, 0, 0]]})"));
+}
+
+TEST(ViewPageData, ReadsAValidationReportWithoutCellsAsNothingDiffering) {
+  ViewPage page;
+  page.validation_json = R"({"verdict": "exact-path-failed"})";
+  EXPECT_EQ(data_of(page).at("validation"), json::parse(R"({"cells_compared": 0,
+      "cells_differing": 0, "layers_differing": [], "cells": []})"));
+  page.validation_json = R"({"cells": {"compared": 8, "differing": 0, "differences": null}})";
+  EXPECT_EQ(data_of(page).at("validation"), json::parse(R"({"cells_compared": 8,
+      "cells_differing": 0, "layers_differing": [], "cells": []})"));
+}
+
+TEST(ViewPageWithData, PutsTheDataInPlaceOfTheMarkerOnce) {
+  const std::string data = R"({"format": "probe-7f3a"})";
+  const std::string page = view_page_with_data(data);
+  EXPECT_EQ(page.find("__STRATA_VIEW_DATA__"), std::string::npos);
+  const std::size_t at = page.find(data);
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_EQ(page.find("probe-7f3a", at + data.size()), std::string::npos);
+  EXPECT_EQ(page.find("probe-7f3a"), at + 12);
+  EXPECT_EQ(page.rfind("<!doctype html>", 0), 0u) << page.substr(0, 40);
+}
+
+TEST(WriteViewPage, WritesThePageWithItsData) {
+  test::TempDir dir("view-page");
+  ViewPage page;
+  page.title = "probe-8c1d";
+  ASSERT_TRUE(write_view_page(dir / "page.html", page).has_value());
+  const std::string written = test::read_file(dir / "page.html");
+  EXPECT_EQ(written, view_page_with_data(*view_page_data(page)));
+}
+
+TEST(WriteViewPage, WritesNothingWhenTheDataIsRefused) {
+  test::TempDir dir("view-page");
+  ViewPage page;
+  page.source_path = "ring.stl";
+  page.report_json = "not json";
+  const Result<void> written = write_view_page(dir / "page.html", page);
+  ASSERT_FALSE(written.has_value());
+  EXPECT_EQ(written.error().to_string(), "ring.stl: the slice report is not JSON");
+  EXPECT_FALSE(std::filesystem::exists(dir / "page.html"));
+}
+
+TEST(WriteViewPage, NamesAPathItCannotWrite) {
+  test::TempDir dir("view-page");
+  std::filesystem::create_directory(dir / "page.html");
+  const Result<void> written = write_view_page(dir / "page.html", ViewPage{});
+  ASSERT_FALSE(written.has_value());
+  EXPECT_EQ(written.error().code, ErrorCode::BadInput);
+  EXPECT_EQ(written.error().to_string(),
+            (dir / "page.html").string() + ": cannot write the file: a folder of that name exists");
+}
+
+}  // namespace
+}  // namespace strata::view
