@@ -109,9 +109,9 @@ class PngStackWriter final : public detail::LayerFilesSink {
   PngStackWriter(const std::filesystem::path& dir, std::string stem, const PngOptions& options)
       : LayerFilesSink(dir, "png", std::move(stem), "png", "PNG stack writer"), options_(options) {}
 
- protected:
   bool needs_cells() const override { return true; }
 
+ protected:
   Result<void> write_layer(OutputFile& out, const LayerResult& layer) override {
     const GridSpec& g = run().grid;
     row_buffer_.resize(g.nx);

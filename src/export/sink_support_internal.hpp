@@ -76,9 +76,9 @@ class SingleFileSink : public LayerSink {
   Result<void> add_layer(const LayerResult& layer) final;
   Result<void> finish() final;
   void abort() noexcept final;
+  bool needs_cells() const override = 0;
 
  protected:
-  virtual bool needs_cells() const = 0;
   virtual Result<void> write_header(OutputFile& out) = 0;
   virtual Result<void> write_layer(OutputFile& out, const LayerResult& layer) = 0;
   virtual Result<void> write_trailer(OutputFile& out) { return {}; }
@@ -106,9 +106,9 @@ class LayerFilesSink : public LayerSink {
   Result<void> add_layer(const LayerResult& layer) final;
   Result<void> finish() final;
   void abort() noexcept final;
+  bool needs_cells() const override = 0;
 
  protected:
-  virtual bool needs_cells() const = 0;
   virtual Result<void> write_layer(OutputFile& out, const LayerResult& layer) = 0;
   const SliceRunInfo& run() const { return progress_.run(); }
   const std::string& stem() const { return stem_; }

@@ -68,9 +68,9 @@ class SvgWriter final : public detail::LayerFilesSink {
   SvgWriter(const std::filesystem::path& dir, std::string stem)
       : LayerFilesSink(dir, "svg", std::move(stem), "svg", "SVG writer") {}
 
- protected:
   bool needs_cells() const override { return false; }
 
+ protected:
   Result<void> write_layer(OutputFile& out, const LayerResult& layer) override {
     const GridSpec& g = run().grid;
     const double width = g.nx * g.dx;
