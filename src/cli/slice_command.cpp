@@ -101,6 +101,8 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   if (!options) return options.error();
   auto formats = parse_formats(o.formats);
   if (!formats) return formats.error();
+  // The report counts the cells; contour outputs alone (cli, cli-binary, svg) do not need them.
+  options->always_classify = formats->count("json") > 0;
   const auto cancelled = [&] {
     return control.cancel != nullptr && control.cancel->load(std::memory_order_relaxed);
   };
@@ -324,16 +326,22 @@ int run_slice(const SliceCommandOptions& o) {
   out += fmt::format("rule    fill {}, shell {} mm ({}), scan offset {} mm\n",
                      to_string(options.fill_rule), options.shell_mm, to_string(options.shell_mode),
                      options.scan_offset_mm);
-  out +=
-      fmt::format("cells   {} empty, {} interior, {} boundary\n", with_thousands(s.class_counts[0]),
-                  with_thousands(s.class_counts[1]), with_thousands(s.class_counts[2]));
   const double mesh_volume = mesh_report.volume_mm3;
-  out += fmt::format("volume  cells {:.6g} mm3, mesh {:.6g} mm3 ({:+.3f} %), contours {:.6g} mm3\n",
-                     s.solid_volume_mm3, mesh_volume,
-                     mesh_volume != 0.0
-                         ? 100.0 * (s.solid_volume_mm3 - mesh_volume) / std::fabs(mesh_volume)
-                         : 0.0,
-                     s.contour_volume_mm3);
+  if (s.cells_classified) {
+    out += fmt::format("cells   {} empty, {} interior, {} boundary\n",
+                       with_thousands(s.class_counts[0]), with_thousands(s.class_counts[1]),
+                       with_thousands(s.class_counts[2]));
+    out += fmt::format(
+        "volume  cells {:.6g} mm3, mesh {:.6g} mm3 ({:+.3f} %), contours {:.6g} mm3\n",
+        s.solid_volume_mm3, mesh_volume,
+        mesh_volume != 0.0 ? 100.0 * (s.solid_volume_mm3 - mesh_volume) / std::fabs(mesh_volume)
+                           : 0.0,
+        s.contour_volume_mm3);
+  } else {
+    out += "cells   not classified: the formats asked hold contours and hatches only\n";
+    out += fmt::format("volume  mesh {:.6g} mm3, contours {:.6g} mm3\n", mesh_volume,
+                       s.contour_volume_mm3);
+  }
   out += fmt::format("chains  {} open chains in {} layers{}\n", s.open_chains,
                      std::count_if(s.layers.begin(), s.layers.end(),
                                    [](const LayerStats& l) { return l.open_chains > 0; }),

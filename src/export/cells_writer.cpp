@@ -27,9 +27,9 @@ class BinaryCellsWriter final : public detail::SingleFileSink {
  public:
   explicit BinaryCellsWriter(std::filesystem::path path) : SingleFileSink(std::move(path), kKind) {}
 
- protected:
   bool needs_cells() const override { return true; }
 
+ protected:
   Result<void> write_header(OutputFile& out) override {
     const GridSpec& g = run().grid;
     std::string header;
@@ -80,9 +80,9 @@ class AsciiCellsWriter final : public detail::SingleFileSink {
  public:
   explicit AsciiCellsWriter(std::filesystem::path path) : SingleFileSink(std::move(path), kKind) {}
 
- protected:
   bool needs_cells() const override { return true; }
 
+ protected:
   Result<void> write_header(OutputFile& out) override {
     const GridSpec& g = run().grid;
     out.write(fmt::format("{}\ngrid {} {} {}\norigin {} {} {}\nspacing {} {} {}\nshell {}\n",

@@ -34,9 +34,9 @@ class CliWriter final : public detail::SingleFileSink {
   CliWriter(std::filesystem::path path, CliEncoding encoding)
       : SingleFileSink(std::move(path), kKind), encoding_(encoding) {}
 
- protected:
   bool needs_cells() const override { return false; }
 
+ protected:
   Result<void> write_header(OutputFile& out) override {
     const GridSpec& g = run().grid;
     const bool binary = encoding_ == CliEncoding::Binary;

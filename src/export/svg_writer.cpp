@@ -68,10 +68,10 @@ class SvgWriter final : public detail::LayerFilesSink {
   SvgWriter(const std::filesystem::path& dir, std::string stem)
       : LayerFilesSink(dir, "svg", std::move(stem), "svg", "SVG writer") {}
 
- protected:
   bool needs_cells() const override { return false; }
 
-  Result<void> write_layer(OutputFile& out, const LayerResult& layer) override {
+ protected:
+  Result<void> write_layer(OutputFile& out, const LayerResult& layer) const override {
     const GridSpec& g = run().grid;
     const double width = g.nx * g.dx;
     const double height = g.ny * g.dy;

@@ -83,16 +83,22 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
   summary.grid = grid;
   summary.layers.resize(grid.nz);
 
-  const BoundaryShell shell(mesh, grid, options.shell_mode, options.shell_mm);
-  if (options.shell_mode == ShellMode::Layers && shell.unequal_cell_sizes()) {
+  // Contour outputs alone need no cell: then neither the shell nor the classification is run.
+  const bool classify =
+      options.always_classify ||
+      std::any_of(sinks.begin(), sinks.end(), [](const LayerSink* s) { return s->needs_cells(); });
+  summary.cells_classified = classify;
+  std::optional<BoundaryShell> shell;
+  if (classify) shell.emplace(mesh, grid, options.shell_mode, options.shell_mm);
+  if (shell && options.shell_mode == ShellMode::Layers && shell->unequal_cell_sizes()) {
     summary.diagnostics.push_back(
         {Severity::Warning, "shell.unequal_cell_sizes",
          fmt::format("shell mode layers with unequal cell sizes ({} x {} x {} mm): rings are "
                      "counted with the smallest, {} rings of {} mm",
-                     grid.dx, grid.dy, grid.dz, shell.rings(),
+                     grid.dx, grid.dy, grid.dz, shell->rings(),
                      std::min({grid.dx, grid.dy, grid.dz}))});
   }
-  const std::uint32_t reach = shell.reach_layers();
+  const std::uint32_t reach = shell ? shell->reach_layers() : 0;
 
   SliceRunInfo run{grid, options, {}};
   for (LayerSink* sink : sinks) {
@@ -125,15 +131,19 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
     tbb::parallel_for(k0, k1, [&](std::uint32_t k) { computed[k - k0] = kernel.compute_layer(k); });
     for (std::uint32_t k = k0; k < k1; ++k) {
       LayerGeometry& g = computed[k - k0];
-      solids[k] = std::move(g.fill.solid);
+      if (classify) solids[k] = std::move(g.fill.solid);
+      g.fill.solid = {};
       pending.emplace(k, std::move(g));
     }
     // Layers whose shell window is complete can be classified and written.
     const std::uint32_t emit_end = k1 == grid.nz ? grid.nz : (k1 > reach ? k1 - reach : 0);
     if (emit_end <= next_emit) continue;
     classes.resize(emit_end - next_emit);
-    tbb::parallel_for(next_emit, emit_end,
-                      [&](std::uint32_t k) { shell.classify(k, lookup, classes[k - next_emit]); });
+    if (classify) {
+      tbb::parallel_for(next_emit, emit_end, [&](std::uint32_t k) {
+        shell->classify(k, lookup, classes[k - next_emit]);
+      });
+    }
     for (std::uint32_t k = next_emit; k < emit_end; ++k) {
       auto node = pending.extract(k);
       LayerGeometry& g = node.mapped();
@@ -193,7 +203,9 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
     }
   }
   add_loop_diagnostics(summary);
-  summary.class_counts[0] = grid.cell_count() - summary.class_counts[1] - summary.class_counts[2];
+  if (classify) {
+    summary.class_counts[0] = grid.cell_count() - summary.class_counts[1] - summary.class_counts[2];
+  }
   summary.solid_volume_mm3 =
       static_cast<double>(summary.class_counts[1] + summary.class_counts[2]) * grid.dx * grid.dy *
       grid.dz;

@@ -34,6 +34,8 @@ class TriangleDistanceFilter {
     const double l2 = scale_ * scale_;
     err_nn_ = 400.0 * kU * l2 * l2;
     has_plane_ = nn_ > 2.0 * err_nn_;
+    len_ = std::sqrt(nn_);
+    inv_nx_ = n_.x != 0.0 ? 1.0 / n_.x : 0.0;
     if (has_plane_) {
       for (int i = 0; i < 3; ++i) {
         const Vec3 e = sub(*v[(i + 1) % 3], *v[i]);
@@ -90,6 +92,34 @@ class TriangleDistanceFilter {
       if ((plane2 + edge2) * (1.0 - 64.0 * kU) > t2_ * (1.0 + 64.0 * kU)) return kFarther;
     }
     return kUndecided;
+  }
+
+  /// Narrows [x_lo, x_hi] on the line (x, y, z) to the points that may lie closer than t to the
+  /// plane of the triangle, hence to the triangle; false when none may. Points left out are at
+  /// least t from the plane by a relative margin of 1e-6, far above the rounding of these few
+  /// double operations, so only pairs the exact predicate would reject are skipped.
+  bool plane_x_range(double y, double z, double& x_lo, double& x_hi) const {
+    if (!has_plane_) return true;
+    const double len = len_;
+    const double cy = n_.y * (y - a_.y);
+    const double cz = n_.z * (z - a_.z);
+    const double c = cy + cz;
+    const double w = std::fabs(n_.x) * std::max(std::fabs(x_lo - a_.x), std::fabs(x_hi - a_.x)) +
+                     std::fabs(cy) + std::fabs(cz);
+    const double r = t_ * len + 1e-6 * (w + t_ * len + len * scale_);
+    if (std::fabs(n_.x) * (x_hi - x_lo) <= 1e-6 * w) {
+      // The plane runs along the line (or nearly): one test for the whole range.
+      const double f_lo = n_.x * (x_lo - a_.x) + c;
+      return std::fabs(f_lo) < r + std::fabs(n_.x) * (x_hi - x_lo) + 1e-6 * w;
+    }
+    const double x1 = a_.x + (-r - c) * inv_nx_;
+    const double x2 = a_.x + (r - c) * inv_nx_;
+    const double lo = std::min(x1, x2);
+    const double hi = std::max(x1, x2);
+    const double widen = 1e-6 * (std::fabs(lo) + std::fabs(hi) + (hi - lo));
+    x_lo = std::max(x_lo, lo - widen);
+    x_hi = std::min(x_hi, hi + widen);
+    return x_lo <= x_hi;
   }
 
   static constexpr int kCloser = 1;
@@ -167,6 +197,8 @@ class TriangleDistanceFilter {
   Vec3 lo_, hi_;
   Vec3 e1_, e2_, n_;
   double nn_ = 0.0, err_nn_ = 0.0, scale_ = 0.0, coord_scale_ = 0.0;
+  double len_ = 0.0;     ///< |n|
+  double inv_nx_ = 0.0;  ///< 1 / n.x (its rounding is far inside plane_x_range's margin)
   bool has_plane_ = false;
   Vec3 m_[3];
   double mm_[3] = {0.0, 0.0, 0.0};

@@ -20,6 +20,7 @@ class CancelSink final : public LayerSink {
   Result<void> add_layer(const LayerResult& layer) override;
   Result<void> finish() override;
   void abort() noexcept override {}
+  bool needs_cells() const override { return false; }
 
  private:
   Result<void> check() const;

@@ -25,7 +25,8 @@ struct SliceRunInfo {
 struct LayerResult {
   std::uint32_t layer = 0;
   double z_mm = 0.0;
-  const std::vector<CellClass>& cells;  ///< nx * ny, row-major (j * nx + i)
+  /// nx * ny, row-major (j * nx + i); empty when no sink needs cells (LayerSink::needs_cells).
+  const std::vector<CellClass>& cells;
   const LayerContours& contours;
   const std::vector<HatchSegment>& hatches;
 };
@@ -40,6 +41,10 @@ class LayerSink {
   virtual Result<void> add_layer(const LayerResult& layer) = 0;
   virtual Result<void> finish() = 0;
   virtual void abort() noexcept = 0;
+  /// Whether add_layer reads LayerResult::cells. When no sink does and the options allow it
+  /// (SliceOptions::always_classify false), the engine skips the shell and the classification
+  /// and hands every sink an empty `cells`.
+  virtual bool needs_cells() const { return true; }
 };
 
 }  // namespace strata

@@ -45,6 +45,9 @@ struct OpenChainReport {
 
 struct SliceSummary {
   GridSpec grid;
+  /// False when no sink needed cells and SliceOptions::always_classify was off: the class counts
+  /// and the solid volume are then 0, the contours and segments as always.
+  bool cells_classified = true;
   /// Cells by class: [0] empty, [1] interior, [2] boundary.
   std::array<std::uint64_t, 3> class_counts{};
   double solid_volume_mm3 = 0.0;    ///< (interior + boundary) * dx * dy * dz

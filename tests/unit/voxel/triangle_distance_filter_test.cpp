@@ -21,6 +21,17 @@ void expect_consistent(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
     if (decided) ++*decided;
   }
   EXPECT_EQ(filter.closer_than(p), exact);
+  // The row range the shell scans may leave out only points that are not closer.
+  if (exact) {
+    for (const double reach : {0.0, 1.0, 1e3}) {
+      double lo = p.x - reach;
+      double hi = p.x + reach;
+      ASSERT_TRUE(filter.plane_x_range(p.y, p.z, lo, hi))
+          << "p=(" << p.x << "," << p.y << "," << p.z << ") t=" << t << " reach " << reach;
+      ASSERT_TRUE(lo <= p.x && p.x <= hi)
+          << "p=(" << p.x << "," << p.y << "," << p.z << ") t=" << t << " reach " << reach;
+    }
+  }
 }
 
 TEST(TriangleDistanceFilter, AgreesWithExactPredicateOnRandomTriangles) {
@@ -105,6 +116,27 @@ TEST(TriangleDistanceFilter, AgreesForPointsPlacedNearTheThreshold) {
     const Vec3 p{centroid.x + n.x * t * f, centroid.y + n.y * t * f, centroid.z + n.z * t * f};
     expect_consistent(a, b, c, p, t);
   }
+}
+
+TEST(TriangleDistanceFilter, PlaneRangeKeepsTheStretchOfARowNearASteepFacet) {
+  // The facet x = 2 (normal along x), t = 0.5: along any row through its footprint only
+  // x in (1.5, 2.5) can be closer, give or take the margin of 1e-6.
+  const Filter filter({2, 0, 0}, {2, 10, 0}, {2, 0, 10}, 0.5);
+  double lo = -100.0;
+  double hi = 100.0;
+  ASSERT_TRUE(filter.plane_x_range(3.0, 4.0, lo, hi));
+  EXPECT_NEAR(lo, 1.5, 1e-3);
+  EXPECT_NEAR(hi, 2.5, 1e-3);
+  // A facet in the plane y = 0, seen along a row at y = 3: no point of it is closer than 0.5.
+  const Filter wall({0, 0, 0}, {10, 0, 0}, {0, 0, 10}, 0.5);
+  lo = -100.0;
+  hi = 100.0;
+  EXPECT_FALSE(wall.plane_x_range(3.0, 4.0, lo, hi));
+  lo = -100.0;
+  hi = 100.0;
+  EXPECT_TRUE(wall.plane_x_range(0.25, 4.0, lo, hi));
+  EXPECT_EQ(lo, -100.0);
+  EXPECT_EQ(hi, 100.0);
 }
 
 }  // namespace
