@@ -19,6 +19,7 @@
 #include "cli/progress.hpp"
 #include "cli/slice_cli_options.hpp"
 #include "cli/slice_report.hpp"
+#include "strata/core/thousands.hpp"
 #include "strata/diagnose/diagnose_mesh.hpp"
 #include "strata/exact/slice_exact.hpp"
 #include "strata/export/cells_writer.hpp"
@@ -61,17 +62,6 @@ Result<std::set<std::string>> parse_formats(const std::string& list) {
   }
   if (formats.empty()) return Error{ErrorCode::Usage, "--format: no format given", {}};
   return formats;
-}
-
-std::string with_thousands(std::uint64_t n) {
-  const std::string digits = std::to_string(n);
-  std::string out;
-  out.reserve(digits.size() + digits.size() / 3);
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out.push_back(',');
-    out.push_back(digits[i]);
-  }
-  return out;
 }
 
 std::string file_url(const fs::path& path) {

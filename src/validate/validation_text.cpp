@@ -7,6 +7,8 @@
 #include <tuple>
 #include <vector>
 
+#include "strata/core/thousands.hpp"
+
 namespace strata::validate {
 
 namespace {
@@ -24,17 +26,6 @@ const char* class_code(CellClass c) {
       return "11";
   }
   return "10";
-}
-
-std::string thousands(std::uint64_t n) {
-  const std::string digits = std::to_string(n);
-  std::string out;
-  out.reserve(digits.size() + digits.size() / 3);
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out.push_back(',');
-    out.push_back(digits[i]);
-  }
-  return out;
 }
 
 std::string mm(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "inf"; }
@@ -94,8 +85,8 @@ std::string reference_text(const ReferenceSlicerFigures& f) {
   out += fmt::format(
       "          {} polylines: {} open ({} still open after joining them at shared points), {} "
       "single points{}\n",
-      thousands(f.polylines), thousands(f.open_polylines), thousands(f.open_after_joining),
-      thousands(f.isolated_points),
+      with_thousands(f.polylines), with_thousands(f.open_polylines),
+      with_thousands(f.open_after_joining), with_thousands(f.isolated_points),
       f.degenerate_facets_dropped > 0
           ? fmt::format("; {} facets with a repeated corner left out", f.degenerate_facets_dropped)
           : std::string());
@@ -122,22 +113,22 @@ std::string validation_text(const ValidationReport& r) {
     out += fmt::format("cells     NOT VALIDATED: the exact path stopped: {}\n",
                        r.exact_error->to_string());
     if (r.layers_compared > 0) {
-      out +=
-          fmt::format("          before that, {} of {} cells differed in {} layers\n",
-                      thousands(r.cells_differing), thousands(r.cells_compared), r.layers_compared);
+      out += fmt::format("          before that, {} of {} cells differed in {} layers\n",
+                         with_thousands(r.cells_differing), with_thousands(r.cells_compared),
+                         r.layers_compared);
     }
   } else if (r.cells_differing == 0) {
     out += fmt::format("cells     AGREE: {} cells compared in {} layers, none differs\n",
-                       thousands(r.cells_compared), r.layers_compared);
+                       with_thousands(r.cells_compared), r.layers_compared);
   } else {
     std::vector<std::string> parts;
     for (std::size_t q = 0; q < kDifferenceReasonCount; ++q) {
       if (r.differing_by_reason[q] == 0) continue;
       parts.push_back(fmt::format("{} {}", to_string(static_cast<DifferenceReason>(q)),
-                                  thousands(r.differing_by_reason[q])));
+                                  with_thousands(r.differing_by_reason[q])));
     }
-    out += fmt::format("cells     DIFFER: {} of {} cells ({})\n", thousands(r.cells_differing),
-                       thousands(r.cells_compared), fmt::join(parts, ", "));
+    out += fmt::format("cells     DIFFER: {} of {} cells ({})\n", with_thousands(r.cells_differing),
+                       with_thousands(r.cells_compared), fmt::join(parts, ", "));
     const std::size_t shown = std::min(kListedInText, r.differences.size());
     for (std::size_t q = 0; q < shown; ++q) {
       const CellDifference& d = r.differences[q];
@@ -147,7 +138,7 @@ std::string validation_text(const ValidationReport& r) {
     }
     if (r.cells_differing > shown) {
       out += fmt::format("          ... {} more (the JSON report lists {})\n",
-                         thousands(r.cells_differing - shown), r.differences.size());
+                         with_thousands(r.cells_differing - shown), r.differences.size());
     }
   }
 
@@ -226,16 +217,16 @@ std::string validation_text(const ValidationReport& r) {
     out += fmt::format(
         "surface-to-shell  {} mm: the farthest of {} surface points from the nearest boundary "
         "cell centre (a cell diagonal is {} mm)\n",
-        mm(*m.surface_to_boundary_mm), thousands(m.surface_samples),
+        mm(*m.surface_to_boundary_mm), with_thousands(m.surface_samples),
         mm(std::sqrt(g.dx * g.dx + g.dy * g.dy + g.dz * g.dz)));
   }
   if (m.shell.measured > 0) {
     out += fmt::format(
         "shell     asked t = {} mm ({}); interior cells next to the shell: {}{}; their distance "
         "to the surface: min {} mm, mean {} mm, max {} mm\n",
-        m.asked_shell_mm, to_string(r.options.shell_mode), thousands(m.shell.cells),
+        m.asked_shell_mm, to_string(r.options.shell_mode), with_thousands(m.shell.cells),
         m.shell.measured < m.shell.cells
-            ? fmt::format(" ({} measured)", thousands(m.shell.measured))
+            ? fmt::format(" ({} measured)", with_thousands(m.shell.measured))
             : std::string(),
         mm(m.shell.min_mm), mm(m.shell.mean_mm), mm(m.shell.max_mm));
   } else {
@@ -246,7 +237,7 @@ std::string validation_text(const ValidationReport& r) {
   // Scan offset.
   if (r.scan_offset.measured) {
     out += fmt::format("offset    the scan offset of {} mm changes {} cells\n",
-                       r.scan_offset.offset_mm, thousands(r.scan_offset.cells_changed));
+                       r.scan_offset.offset_mm, with_thousands(r.scan_offset.cells_changed));
     const std::size_t shown = std::min(kListedInText, r.scan_offset.cells.size());
     for (std::size_t q = 0; q < shown; ++q) {
       const OffsetChange& c = r.scan_offset.cells[q];
@@ -254,7 +245,8 @@ std::string validation_text(const ValidationReport& r) {
                          c.k, class_code(c.with_offset), class_code(c.without_offset));
     }
     if (r.scan_offset.cells_changed > shown) {
-      out += fmt::format("          ... {} more\n", thousands(r.scan_offset.cells_changed - shown));
+      out += fmt::format("          ... {} more\n",
+                         with_thousands(r.scan_offset.cells_changed - shown));
     }
   }
 
