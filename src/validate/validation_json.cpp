@@ -4,23 +4,13 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "strata/voxel/cell_code.hpp"
+
 namespace strata::validate {
 
 namespace {
 
 using nlohmann::json;
-
-const char* class_code(CellClass c) {
-  switch (c) {
-    case CellClass::Empty:
-      return "00";
-    case CellClass::Interior:
-      return "01";
-    case CellClass::Boundary:
-      return "11";
-  }
-  return "10";
-}
 
 json number(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
@@ -165,8 +155,8 @@ std::string validation_json(const ValidationReport& r) {
     listed.push_back({{"i", d.i},
                       {"j", d.j},
                       {"k", d.k},
-                      {"fast", class_code(d.fast)},
-                      {"exact", class_code(d.exact)},
+                      {"fast", cell_code(d.fast)},
+                      {"exact", cell_code(d.exact)},
                       {"reason", to_string(d.reason)}});
   }
   out["cells"] = {{"layers_compared", r.layers_compared},
@@ -203,8 +193,8 @@ std::string validation_json(const ValidationReport& r) {
     offset_cells.push_back({{"i", c.i},
                             {"j", c.j},
                             {"k", c.k},
-                            {"with_offset", class_code(c.with_offset)},
-                            {"without_offset", class_code(c.without_offset)}});
+                            {"with_offset", cell_code(c.with_offset)},
+                            {"without_offset", cell_code(c.without_offset)}});
   }
   out["scan_offset"] = {{"measured", r.scan_offset.measured},
                         {"offset_mm", r.scan_offset.offset_mm},

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "strata/core/thousands.hpp"
+#include "strata/voxel/cell_code.hpp"
 
 namespace strata::validate {
 
@@ -15,18 +16,6 @@ namespace {
 
 constexpr std::size_t kListedInText = 20;
 constexpr std::size_t kWorstLayers = 5;
-
-const char* class_code(CellClass c) {
-  switch (c) {
-    case CellClass::Empty:
-      return "00";
-    case CellClass::Interior:
-      return "01";
-    case CellClass::Boundary:
-      return "11";
-  }
-  return "10";
-}
 
 std::string mm(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "inf"; }
 
@@ -134,7 +123,7 @@ std::string validation_text(const ValidationReport& r) {
       const CellDifference& d = r.differences[q];
       out += fmt::format("          cell ({}, {}, {}) at ({}, {}, {}) mm: fast {}, exact {}: {}\n",
                          d.i, d.j, d.k, mm(g.xc(d.i)), mm(g.yc(d.j)), mm(g.zk(d.k)),
-                         class_code(d.fast), class_code(d.exact), to_string(d.reason));
+                         cell_code(d.fast), cell_code(d.exact), to_string(d.reason));
     }
     if (r.cells_differing > shown) {
       out += fmt::format("          ... {} more (the JSON report lists {})\n",
@@ -242,7 +231,7 @@ std::string validation_text(const ValidationReport& r) {
     for (std::size_t q = 0; q < shown; ++q) {
       const OffsetChange& c = r.scan_offset.cells[q];
       out += fmt::format("          cell ({}, {}, {}): {} with the offset, {} without\n", c.i, c.j,
-                         c.k, class_code(c.with_offset), class_code(c.without_offset));
+                         c.k, cell_code(c.with_offset), cell_code(c.without_offset));
     }
     if (r.scan_offset.cells_changed > shown) {
       out += fmt::format("          ... {} more\n",
