@@ -11,6 +11,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "cli/command.hpp"
 #include "cli/exit_code.hpp"
@@ -221,12 +222,10 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
     page.source_kind = "model";
     page.source_path = m.path.string();
     page.report_json = report.dump();
-    page.mesh = view::make_display_mesh(m.mesh, o.page.max_facets);
-    if (page.mesh->simplified) {
-      page.notes.push_back(fmt::format(
-          "display mesh simplified from {} to {} facets for the browser; slicing used every facet",
-          with_thousands(page.mesh->facets_in_model), with_thousands(page.mesh->facets())));
-    }
+    view::NotedDisplayMesh display = view::make_noted_display_mesh(
+        m.mesh, o.page.max_facets, view::SliceStage::Sliced, view::CountDigits::GroupedByThousands);
+    page.mesh = std::move(display.mesh);
+    if (display.note) page.notes.push_back(std::move(*display.note));
     if (!mesh_report.self_intersections_checked) {
       page.notes.push_back(
           fmt::format("self-intersections not checked: `strata check {}` or "
