@@ -220,11 +220,9 @@ void ReferenceSlicer::Impl::build(const IndexedMesh& input) {
     // non-manifold vertices and edges, and only reverses facets otherwise.
     std::vector<Point3> copy_points = points;
     std::vector<Polygon> copy_polygons = polygons;
-    soup::OrientSoupCounts counters;
-    const bool oriented = PMP::orient_polygon_soup(
-        copy_points, copy_polygons, CGAL::parameters::visitor(soup::OrientSoupVisitor{&counters}));
-    const std::size_t duplicated = copy_points.size() - points.size();
-    if (!oriented || duplicated > 0 || !counters.non_manifold_edges.empty()) {
+    const soup::OrientSoupCounts counters = soup::orient_soup(copy_points, copy_polygons);
+    const std::size_t duplicated = counters.points_added;
+    if (!counters.oriented || duplicated > 0 || !counters.non_manifold_edges.empty()) {
       refuse(ReferenceSkip::NonManifold,
              fmt::format("not a 2-manifold: {} non-manifold edges; orienting the facets "
                          "duplicates {} points",
