@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -295,80 +296,72 @@ std::filesystem::path ascii_with_line(const ScratchDir& dir, std::size_t number,
   return path;
 }
 
-TEST(CellsReader, AsciiShortRowNamesTheLine) {
+/// One line of the ASCII file of small_run() replaced, and how the reader must refuse it: at
+/// `error_line`, with the whole `message`, or a message containing `part`, or (both null) with
+/// only the place checked.
+struct AsciiLineCase {
+  const char* name;
+  std::size_t line;
+  const char* replacement;
+  std::size_t error_line;
+  const char* message = nullptr;
+  const char* part = nullptr;
+};
+
+void PrintTo(const AsciiLineCase& c, std::ostream* os) { *os << c.name; }
+
+class CellsReaderAsciiLine : public ::testing::TestWithParam<AsciiLineCase> {};
+
+TEST_P(CellsReaderAsciiLine, IsRefusedNamingTheLine) {
+  const AsciiLineCase& c = GetParam();
   ScratchDir dir;
-  const auto path = ascii_with_line(dir, 8, "11000100");
+  const auto path = ascii_with_line(dir, c.line, c.replacement);
   const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":8");
-  EXPECT_TRUE(contains(e.message, "row 1 of layer 0 has 8 characters; expected 10")) << e.message;
+  EXPECT_EQ(e.location, path.string() + ":" + std::to_string(c.error_line));
+  if (c.message != nullptr) {
+    EXPECT_EQ(e.message, c.message);
+  }
+  if (c.part != nullptr) {
+    EXPECT_TRUE(contains(e.message, c.part)) << e.message;
+  }
 }
 
-TEST(CellsReader, AsciiReservedCodeNamesTheLineAndCell) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 12, "1101100111");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":12");
-  EXPECT_TRUE(contains(e.message, "reserved cell code 10 at layer 1, row 1, cell 2")) << e.message;
-}
-
-TEST(CellsReader, AsciiForeignCharacterNamesTheLine) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 7, "00011x1101");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":7");
-  EXPECT_TRUE(contains(e.message, "cell 2")) << e.message;
-}
-
-TEST(CellsReader, AsciiWrongLayerIndexNamesTheLine) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 10, "layer 2 z=1.625");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":10");
-  EXPECT_TRUE(contains(e.message, "layer 2 found where layer 1 was expected")) << e.message;
-}
-
-TEST(CellsReader, AsciiMalformedLayerLineNamesTheLine) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 10, "layer 1 at 1.625");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":10");
-}
-
-TEST(CellsReader, AsciiBadHeaderValueNamesTheLine) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 3, "origin -1.5 abc 0.125");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":3");
-}
-
-// The numbers of an ASCII cells file follow the grammar of every text format (README "Numbers in
-// text formats") and are refused with the same message.
-TEST(CellsReader, AsciiHeaderNumberTooLargeIsABadNumberNamingTheLine) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 3, "origin -1.5 1e999 0.125");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":3");
-  EXPECT_EQ(e.message,
-            "bad number '1e999': too large for a double (|x| <= 1.7976931348623157e308)");
-}
-
-TEST(CellsReader, AsciiGridSizeWithAFractionIsABadNumber) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 2, "grid 5 3.0 2");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":2");
-  EXPECT_EQ(e.message,
-            "bad number '3.0': not an integer (no decimal point or exponent where an integer is "
-            "expected)");
-}
-
-TEST(CellsReader, AsciiLayerHeightNanIsABadNumber) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 10, "layer 1 z=nan");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":10");
-  EXPECT_EQ(e.message, "bad number 'nan': not a number (inf and nan are not accepted)");
-}
+INSTANTIATE_TEST_SUITE_P(
+    CellsReader, CellsReaderAsciiLine,
+    ::testing::Values(
+        AsciiLineCase{"ShortRow", 8, "11000100", 8, nullptr,
+                      "row 1 of layer 0 has 8 characters; expected 10"},
+        AsciiLineCase{"ReservedCodeNamesTheCell", 12, "1101100111", 12, nullptr,
+                      "reserved cell code 10 at layer 1, row 1, cell 2"},
+        AsciiLineCase{"ForeignCharacter", 7, "00011x1101", 7, nullptr, "cell 2"},
+        AsciiLineCase{"WrongLayerIndex", 10, "layer 2 z=1.625", 10, nullptr,
+                      "layer 2 found where layer 1 was expected"},
+        AsciiLineCase{"MalformedLayerLine", 10, "layer 1 at 1.625", 10},
+        AsciiLineCase{"BadHeaderValue", 3, "origin -1.5 abc 0.125", 3},
+        // The numbers of an ASCII cells file follow the grammar of every text format (README
+        // "Numbers in text formats") and are refused with the same message.
+        AsciiLineCase{"HeaderNumberTooLarge", 3, "origin -1.5 1e999 0.125", 3,
+                      "bad number '1e999': too large for a double (|x| <= 1.7976931348623157e308)"},
+        AsciiLineCase{"GridSizeWithAFraction", 2, "grid 5 3.0 2", 2,
+                      "bad number '3.0': not an integer (no decimal point or exponent where an "
+                      "integer is expected)"},
+        AsciiLineCase{"LayerHeightNan", 10, "layer 1 z=nan", 10,
+                      "bad number 'nan': not a number (inf and nan are not accepted)"},
+        AsciiLineCase{"UnknownHeaderKey", 5, "thickness 0.75", 5, nullptr,
+                      "unknown header key 'thickness'"},
+        AsciiLineCase{"UnsupportedVersionNamesBothVersionLines", 1, "strata-cells 2", 1,
+                      "unsupported version line 'strata-cells 2'; expected 'strata-cells 1'"},
+        // It starts like an ASCII cells file, so the ASCII reader says what the first line
+        // must be.
+        AsciiLineCase{"AnotherFirstLine", 1, "strata-cells-1", 1,
+                      "expected the first line 'strata-cells 1'"},
+        AsciiLineCase{"HeaderKeyGivenTwice", 5, "grid 5 3 2", 5,
+                      "'grid' appears twice in the header"},
+        AsciiLineCase{"HeaderLineWithTooFewValuesShowsItsShape", 4, "spacing 0.5 0.25", 4,
+                      "expected 'spacing dx dy dz'"},
+        AsciiLineCase{"MissingHeaderKeyNamedAtTheFirstLayer", 5, "", 6,
+                      "the header has no 'shell' line before the first layer"}),
+    [](const ::testing::TestParamInfo<AsciiLineCase>& info) { return info.param.name; });
 
 TEST(CellsReader, AsciiSignedNumbersAreRead) {
   ScratchDir dir;
@@ -376,21 +369,6 @@ TEST(CellsReader, AsciiSignedNumbersAreRead) {
   auto read = read_cells(path);
   ASSERT_TRUE(read) << read.error().to_string();
   EXPECT_EQ(read->cells, all_small_cells());
-}
-
-TEST(CellsReader, AsciiUnknownHeaderKeyNamesTheLine) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 5, "thickness 0.75");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":5");
-  EXPECT_TRUE(contains(e.message, "unknown header key 'thickness'")) << e.message;
-}
-
-TEST(CellsReader, AsciiUnsupportedVersionIsRejected) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 1, "strata-cells 2");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":1");
 }
 
 TEST(CellsReader, AsciiTruncatedFileSaysWhatIsMissing) {
@@ -411,46 +389,6 @@ TEST(CellsReader, AsciiExtraContentAfterTheLastLayerIsRejected) {
   write_file_bytes(path, read_file_bytes(path) + "\n0000000000\n");
   const Error e = read_error(path);
   EXPECT_EQ(e.location, path.string() + ":15");
-}
-
-TEST(CellsReader, AsciiFileWithAnotherFirstLineIsRejected) {
-  // It starts like an ASCII cells file, so the ASCII reader says what the first line must be.
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 1, "strata-cells-1");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":1");
-  EXPECT_EQ(e.message, "expected the first line 'strata-cells 1'");
-}
-
-TEST(CellsReader, AsciiUnsupportedVersionNamesBothVersionLines) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 1, "strata-cells 2");
-  EXPECT_EQ(read_error(path).message,
-            "unsupported version line 'strata-cells 2'; expected 'strata-cells 1'");
-}
-
-TEST(CellsReader, AsciiHeaderKeyGivenTwiceIsRejected) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 5, "grid 5 3 2");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":5");
-  EXPECT_EQ(e.message, "'grid' appears twice in the header");
-}
-
-TEST(CellsReader, AsciiHeaderLineWithTooFewValuesShowsItsShape) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 4, "spacing 0.5 0.25");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":4");
-  EXPECT_EQ(e.message, "expected 'spacing dx dy dz'");
-}
-
-TEST(CellsReader, AsciiMissingHeaderKeyIsNamedAtTheFirstLayer) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 5, "");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":6");
-  EXPECT_EQ(e.message, "the header has no 'shell' line before the first layer");
 }
 
 /// The first `count` lines of the ASCII file of small_run().
