@@ -11,33 +11,21 @@
 #include <vector>
 
 #include "strata/io/read_mesh.hpp"
+#include "support/mesh_reading.hpp"
 #include "support/temp_dir.hpp"
 
 namespace strata::io {
 namespace {
 
-std::filesystem::path adversarial(std::string_view name) {
-  return std::filesystem::path(STRATA_DATA_DIR) / "adversarial" / name;
-}
-
-std::filesystem::path corpus_file(std::string_view relative) {
-  return std::filesystem::path(STRATA_SHARED_DIR) / "corpus" / relative;
-}
+using test::adversarial;
+using test::contains;
+using test::corpus_file;
+using test::expect_read_with_diagnostic;
+using test::find_diagnostic;
 
 std::string file_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-const Diagnostic* find_diagnostic(const TriangleSoup& soup, std::string_view code) {
-  for (const Diagnostic& d : soup.diagnostics) {
-    if (d.code == code) return &d;
-  }
-  return nullptr;
-}
-
-bool contains(std::string_view text, std::string_view part) {
-  return text.find(part) != std::string_view::npos;
 }
 
 using Triangle = std::array<Vec3, 3>;
@@ -312,10 +300,8 @@ TEST(ReadOff, ReadsPolygonsAsFansInDouble) {
 }
 
 TEST(ReadOff, CountsGluedToTheKeywordAreReadWithWarning) {
-  const auto soup = read_mesh(corpus_file("trimesh/models/whitespace.off"));
-  ASSERT_TRUE(soup) << soup.error().to_string();
-  EXPECT_EQ(soup->triangles.size(), 12u);
-  EXPECT_NE(find_diagnostic(*soup, "off.glued_counts"), nullptr);
+  expect_read_with_diagnostic(corpus_file("trimesh/models/whitespace.off"), 12u,
+                              "off.glued_counts");
 }
 
 TEST(ReadOff, HostileCountsFailBeforeAllocating) {
