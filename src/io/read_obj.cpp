@@ -14,7 +14,7 @@
 #include <string_view>
 
 #include "io/read_mesh_internal.hpp"
-#include "io/text_lines_internal.hpp"
+#include "io/text_format_internal.hpp"
 #include "strata/io/scan_number.hpp"
 
 namespace strata::io::detail {
@@ -84,18 +84,11 @@ bool ObjReader::next_line(std::string_view& line) {
 }
 
 Result<void> ObjReader::read_vertex(std::string_view rest) {
-  std::array<double, 3> p{};
-  for (int k = 0; k < 3; ++k) {
-    const std::string_view token = next_token(rest);
-    if (token.empty()) {
-      return error_here(
-          fmt::format("vertex has {} coordinate{}, expected 3", k, k == 1 ? "" : "s"));
-    }
-    const ScannedNumber<double> scanned = scan_real(token);  // double, not rounded: SPEC §2
-    if (!scanned.ok()) return bad_number(location(), token, scanned);
-    p[k] = scanned.value;
-  }
-  soup_.points.push_back(p);
+  // double, not rounded: SPEC §2
+  const Result<std::array<double, 3>> p =
+      scan_vertex(rest, NumberType::Float64, [&] { return location(); });
+  if (!p) return p.error();
+  soup_.points.push_back(*p);
   return {};
 }
 

@@ -14,7 +14,7 @@
 
 #include "io/read_mesh_internal.hpp"
 #include "io/stl_format_internal.hpp"
-#include "io/text_lines_internal.hpp"
+#include "io/text_format_internal.hpp"
 #include "strata/io/read_mesh.hpp"
 #include "strata/io/scan_number.hpp"
 
@@ -254,23 +254,15 @@ void AsciiStlParser::begin_facet(std::string_view rest) {
 }
 
 Result<void> AsciiStlParser::add_vertex(std::string_view rest) {
-  std::array<double, 3> p{};
-  for (int k = 0; k < 3; ++k) {
-    const std::string_view token = next_token(rest);
-    if (token.empty()) {
-      return error_here(
-          fmt::format("vertex has {} coordinate{}, expected 3", k, k == 1 ? "" : "s"));
-    }
-    const ScannedNumber<double> scanned = scan_real(token, NumberType::Float32);
-    if (!scanned.ok()) return bad_number(line_location(name_, lines_.number()), token, scanned);
-    p[k] = scanned.value;
-  }
+  const Result<std::array<double, 3>> p = detail::scan_vertex(
+      rest, NumberType::Float32, [&] { return line_location(name_, lines_.number()); });
+  if (!p) return p.error();
   const std::string_view extra = next_token(rest);
   if (!extra.empty()) {
     return error_here(
         fmt::format("vertex has more than 3 coordinates (unexpected {})", quote(extra)));
   }
-  facet_vertices_.push_back(Vec3{p[0], p[1], p[2]});
+  facet_vertices_.push_back(Vec3{(*p)[0], (*p)[1], (*p)[2]});
   return {};
 }
 

@@ -1,11 +1,20 @@
 #pragma once
 
+// What the text mesh readers (ASCII STL, OBJ) share: their lines, their vertex lines and how they
+// quote input in messages.
+
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
+
+#include "io/read_mesh_internal.hpp"
+#include "strata/core/result.hpp"
+#include "strata/io/scan_number.hpp"
 
 namespace strata::io::detail {
 
@@ -70,6 +79,28 @@ inline std::string quote_input(std::string_view text, std::size_t max_chars) {
   }
   if (text.size() > max_chars) out += "...";
   return out + "'";
+}
+
+/// The three coordinates a vertex line gives, taken from the start of `rest` and scanned as
+/// `type`; what follows them is left in `rest`.
+/// @param location  gives the place for a message (called only on an error)
+/// @return Error{BadInput} at location() when there are fewer than three or one is a bad number
+template <class Location>
+Result<std::array<double, 3>> scan_vertex(std::string_view& rest, NumberType type,
+                                          const Location& location) {
+  std::array<double, 3> p{};
+  for (int k = 0; k < 3; ++k) {
+    const std::string_view token = next_token(rest);
+    if (token.empty()) {
+      return Error{ErrorCode::BadInput,
+                   fmt::format("vertex has {} coordinate{}, expected 3", k, k == 1 ? "" : "s"),
+                   location()};
+    }
+    const ScannedNumber<double> scanned = scan_real(token, type);
+    if (!scanned.ok()) return bad_number(location(), token, scanned);
+    p[k] = scanned.value;
+  }
+  return p;
 }
 
 }  // namespace strata::io::detail
