@@ -1,6 +1,13 @@
 // Drawing helpers shared by the 2D views.
 
-import { GRID_LINE } from './palette.js';
+import { CANVAS_BACKGROUND, GRID_LINE } from './palette.js';
+
+/** Fills the whole canvas with the 2D views' background, in device pixels. */
+export function clearCanvas(ctx, canvas) {
+  ctx.setTransform(1, 0, 0, 1, 0, 0);
+  ctx.fillStyle = CANVAS_BACKGROUND;
+  ctx.fillRect(0, 0, canvas.width, canvas.height);
+}
 
 /** A centred note on a canvas (for "decoding…" and errors). */
 export function drawMessage(ctx, canvas, dpr, text) {

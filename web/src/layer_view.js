@@ -5,8 +5,8 @@
 import { Viewport2D } from './viewport2d.js';
 import { layerCanvas } from './layer_image.js';
 import { cellText } from './format.js';
-import { CANVAS_BACKGROUND, CONTOUR, DIFFERING, HATCH } from './palette.js';
-import { drawCellImage, drawMessage, outlineCellRect, outlineCells } from './canvas_draw.js';
+import { CONTOUR, DIFFERING, HATCH } from './palette.js';
+import { clearCanvas, drawCellImage, drawMessage, outlineCellRect, outlineCells } from './canvas_draw.js';
 
 export class LayerView {
   constructor({ canvas, data, state, showHatches, fitButton, setCellInfo, onImage }) {
@@ -76,9 +76,7 @@ export class LayerView {
     const vp = this.viewport;
     const g = this.data.grid;
     const dpr = vp.dpr;
-    ctx.setTransform(1, 0, 0, 1, 0, 0);
-    ctx.fillStyle = CANVAS_BACKGROUND;
-    ctx.fillRect(0, 0, this.canvas.width, this.canvas.height);
+    clearCanvas(ctx, this.canvas);
     if (this.error) {
       drawMessage(ctx, this.canvas, dpr, this.error);
       return;

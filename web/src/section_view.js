@@ -4,8 +4,8 @@
 
 import { Viewport2D } from './viewport2d.js';
 import { cellText, mm } from './format.js';
-import { CANVAS_BACKGROUND, CELL_RGB, DIFFERING, SELECTED_LAYER } from './palette.js';
-import { drawCellImage, drawMessage, outlineCellRect, outlineCells } from './canvas_draw.js';
+import { CELL_RGB, DIFFERING, SELECTED_LAYER } from './palette.js';
+import { clearCanvas, drawCellImage, drawMessage, outlineCellRect, outlineCells } from './canvas_draw.js';
 
 export class SectionView {
   constructor({ canvas, axisSelect, slider, sliderLabel, progress, fitButton, data, state, setCellInfo }) {
@@ -155,9 +155,7 @@ export class SectionView {
     const vp = this.viewport;
     const g = this.data.grid;
     const dpr = vp.dpr;
-    ctx.setTransform(1, 0, 0, 1, 0, 0);
-    ctx.fillStyle = CANVAS_BACKGROUND;
-    ctx.fillRect(0, 0, this.canvas.width, this.canvas.height);
+    clearCanvas(ctx, this.canvas);
     const s = this.section;
     if (!s || s.axis !== this.axis) {
       drawMessage(ctx, this.canvas, dpr, this.started ? 'assembling the section…' : 'the section is built when shown');
