@@ -187,60 +187,68 @@ TEST(CellsReader, MissingFileIsBadInput) {
   EXPECT_EQ(e.location, (dir / "nope.cells").string());
 }
 
-TEST(CellsReader, BadMagicIsRejected) {
+/// The binary file of small_run() edited, and how the reader must refuse it: a message containing
+/// `part` and, unless `place` is null, the location `path + place`.
+struct BinaryEditCase {
+  const char* name;
+  std::string (*edit)(std::string file);
+  const char* place;
+  const char* part;
+};
+
+void PrintTo(const BinaryEditCase& c, std::ostream* os) { *os << c.name; }
+
+class CellsReaderBinaryEdit : public ::testing::TestWithParam<BinaryEditCase> {};
+
+TEST_P(CellsReaderBinaryEdit, IsRejected) {
+  const BinaryEditCase& c = GetParam();
   ScratchDir dir;
   const auto path = write_small(dir, CellsEncoding::Binary);
-  std::string file = read_file_bytes(path);
-  file[7] = '2';  // STRCELL2
-  write_file_bytes(path, file);
+  write_file_bytes(path, c.edit(read_file_bytes(path)));
   const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string());
-  EXPECT_TRUE(contains(e.message, "STRCELL1")) << e.message;
+  if (c.place != nullptr) {
+    EXPECT_EQ(e.location, path.string() + c.place);
+  }
+  EXPECT_TRUE(contains(e.message, c.part)) << e.message;
 }
 
-TEST(CellsReader, TruncatedHeaderIsRejected) {
-  ScratchDir dir;
-  const auto path = write_small(dir, CellsEncoding::Binary);
-  write_file_bytes(path, read_file_bytes(path).substr(0, 40));
-  const Error e = read_error(path);
-  EXPECT_TRUE(contains(e.message, "ends after 40 bytes")) << e.message;
-}
-
-TEST(CellsReader, WrongHeaderSizeFieldIsRejected) {
-  ScratchDir dir;
-  const auto path = write_small(dir, CellsEncoding::Binary);
-  std::string file = read_file_bytes(path);
-  file[8] = 96;
-  write_file_bytes(path, file);
-  const Error e = read_error(path);
-  EXPECT_TRUE(contains(e.message, "header size field is 96")) << e.message;
-}
-
-TEST(CellsReader, TruncatedLayersAreRejectedWithTheExpectedLength) {
-  ScratchDir dir;
-  const auto path = write_small(dir, CellsEncoding::Binary);
-  write_file_bytes(path, read_file_bytes(path).substr(0, 86));
-  const Error e = read_error(path);
-  EXPECT_TRUE(contains(e.message, "86 bytes, shorter than the 88 bytes")) << e.message;
-}
-
-TEST(CellsReader, TrailingBytesAreRejected) {
-  ScratchDir dir;
-  const auto path = write_small(dir, CellsEncoding::Binary);
-  write_file_bytes(path, read_file_bytes(path) + std::string(1, '\0'));
-  const Error e = read_error(path);
-  EXPECT_TRUE(contains(e.message, "89 bytes, longer than the 88 bytes")) << e.message;
-}
-
-TEST(CellsReader, ZeroSizedGridIsRejected) {
-  ScratchDir dir;
-  const auto path = write_small(dir, CellsEncoding::Binary);
-  std::string file = read_file_bytes(path);
-  file[12] = 0;  // nx = 0
-  write_file_bytes(path, file.substr(0, 80));
-  const Error e = read_error(path);
-  EXPECT_TRUE(contains(e.message, "0 x 3 x 2")) << e.message;
-}
+INSTANTIATE_TEST_SUITE_P(
+    CellsReader, CellsReaderBinaryEdit,
+    ::testing::Values(BinaryEditCase{"BadMagic",
+                                     +[](std::string file) {
+                                       file[7] = '2';  // STRCELL2
+                                       return file;
+                                     },
+                                     "", "STRCELL1"},
+                      BinaryEditCase{"TruncatedHeader",
+                                     +[](std::string file) { return file.substr(0, 40); }, nullptr,
+                                     "ends after 40 bytes"},
+                      BinaryEditCase{"WrongHeaderSizeField",
+                                     +[](std::string file) {
+                                       file[8] = 96;
+                                       return file;
+                                     },
+                                     nullptr, "header size field is 96"},
+                      BinaryEditCase{"TruncatedLayersWithTheExpectedLength",
+                                     +[](std::string file) { return file.substr(0, 86); }, nullptr,
+                                     "86 bytes, shorter than the 88 bytes"},
+                      BinaryEditCase{"TrailingBytes",
+                                     +[](std::string file) { return file + std::string(1, '\0'); },
+                                     nullptr, "89 bytes, longer than the 88 bytes"},
+                      BinaryEditCase{"ZeroSizedGrid",
+                                     +[](std::string file) {
+                                       file[12] = 0;  // nx = 0
+                                       return file.substr(0, 80);
+                                     },
+                                     nullptr, "0 x 3 x 2"},
+                      BinaryEditCase{"NonZeroPaddingBits",
+                                     +[](std::string file) {
+                                       // layer 0's last byte 0x70 with a padding bit set
+                                       file[83] = static_cast<char>(0x71);
+                                       return file;
+                                     },
+                                     ": layer 0", "padding"}),
+    [](const ::testing::TestParamInfo<BinaryEditCase>& info) { return info.param.name; });
 
 TEST(CellsReader, ReservedCodeNamesLayerRowAndCell) {
   ScratchDir dir;
@@ -253,17 +261,6 @@ TEST(CellsReader, ReservedCodeNamesLayerRowAndCell) {
   const Error e = read_error(path);
   EXPECT_EQ(e.location, path.string() + ": layer 1, row 1, cell 1");
   EXPECT_TRUE(contains(e.message, "reserved cell code 10")) << e.message;
-}
-
-TEST(CellsReader, NonZeroPaddingBitsAreRejected) {
-  ScratchDir dir;
-  const auto path = write_small(dir, CellsEncoding::Binary);
-  std::string file = read_file_bytes(path);
-  file[83] = static_cast<char>(0x71);  // layer 0's last byte 0x70 with a padding bit set
-  write_file_bytes(path, file);
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ": layer 0");
-  EXPECT_TRUE(contains(e.message, "padding")) << e.message;
 }
 
 TEST(CellsReader, SummaryStopsAtTheSameErrors) {
