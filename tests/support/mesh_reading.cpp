@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "strata/io/read_mesh.hpp"
 
 namespace strata::test {
@@ -31,6 +33,16 @@ void expect_read_with_diagnostic(const std::filesystem::path& path, std::size_t 
   ASSERT_TRUE(soup) << soup.error().to_string();
   EXPECT_EQ(soup->triangles.size(), facets) << path;
   EXPECT_NE(find_diagnostic(*soup, code), nullptr) << path << ": no " << code;
+}
+
+void expect_refused(const std::filesystem::path& path, std::string_view part,
+                    std::optional<std::string_view> place) {
+  const auto soup = io::read_mesh(path);
+  ASSERT_FALSE(soup) << path << " was read";
+  if (place) {
+    EXPECT_EQ(soup.error().location, path.string() + std::string(*place));
+  }
+  EXPECT_TRUE(contains(soup.error().message, part)) << soup.error().message;
 }
 
 }  // namespace strata::test

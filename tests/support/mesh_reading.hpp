@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string_view>
 
 #include "strata/core/diagnostic.hpp"
@@ -25,5 +26,11 @@ bool contains(std::string_view text, std::string_view part);
 /// triangles and a diagnostic of `code`.
 void expect_read_with_diagnostic(const std::filesystem::path& path, std::size_t facets,
                                  std::string_view code);
+
+/// Reads the mesh file at `path`; fails the current test unless reading fails with a message
+/// containing `part` and, when `place` is given, the location `path` followed by `place`
+/// (":5" for line 5).
+void expect_refused(const std::filesystem::path& path, std::string_view part,
+                    std::optional<std::string_view> place = std::nullopt);
 
 }  // namespace strata::test
