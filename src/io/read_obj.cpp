@@ -85,10 +85,10 @@ bool ObjReader::next_line(std::string_view& line) {
 
 Result<void> ObjReader::read_vertex(std::string_view rest) {
   // double, not rounded: SPEC §2
-  const Result<std::array<double, 3>> p =
-      scan_vertex(rest, NumberType::Float64, [&] { return location(); });
-  if (!p) return p.error();
-  soup_.points.push_back(*p);
+  std::array<double, 3> p{};
+  const auto here = [&] { return location(); };
+  if (auto r = scan_vertex(rest, NumberType::Float64, here, p); !r) return r;
+  soup_.points.push_back(p);
   return {};
 }
 

@@ -254,15 +254,15 @@ void AsciiStlParser::begin_facet(std::string_view rest) {
 }
 
 Result<void> AsciiStlParser::add_vertex(std::string_view rest) {
-  const Result<std::array<double, 3>> p = detail::scan_vertex(
-      rest, NumberType::Float32, [&] { return line_location(name_, lines_.number()); });
-  if (!p) return p.error();
+  std::array<double, 3> p{};
+  const auto here = [&] { return line_location(name_, lines_.number()); };
+  if (auto r = detail::scan_vertex(rest, NumberType::Float32, here, p); !r) return r;
   const std::string_view extra = next_token(rest);
   if (!extra.empty()) {
     return error_here(
         fmt::format("vertex has more than 3 coordinates (unexpected {})", quote(extra)));
   }
-  facet_vertices_.push_back(Vec3{(*p)[0], (*p)[1], (*p)[2]});
+  facet_vertices_.push_back(Vec3{p[0], p[1], p[2]});
   return {};
 }
 

@@ -82,13 +82,12 @@ inline std::string quote_input(std::string_view text, std::size_t max_chars) {
 }
 
 /// The three coordinates a vertex line gives, taken from the start of `rest` and scanned as
-/// `type`; what follows them is left in `rest`.
+/// `type` into `p`; what follows them is left in `rest`.
 /// @param location  gives the place for a message (called only on an error)
 /// @return Error{BadInput} at location() when there are fewer than three or one is a bad number
 template <class Location>
-Result<std::array<double, 3>> scan_vertex(std::string_view& rest, NumberType type,
-                                          const Location& location) {
-  std::array<double, 3> p{};
+Result<void> scan_vertex(std::string_view& rest, NumberType type, const Location& location,
+                         std::array<double, 3>& p) {
   for (int k = 0; k < 3; ++k) {
     const std::string_view token = next_token(rest);
     if (token.empty()) {
@@ -100,7 +99,7 @@ Result<std::array<double, 3>> scan_vertex(std::string_view& rest, NumberType typ
     if (!scanned.ok()) return bad_number(location(), token, scanned);
     p[k] = scanned.value;
   }
-  return p;
+  return {};
 }
 
 }  // namespace strata::io::detail
