@@ -6,6 +6,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <utility>
 
 #include "cli/load_model.hpp"
 #include "strata/diagnose/diagnose_mesh.hpp"
@@ -46,12 +47,10 @@ Result<void> write_model_view(const serve::TaskRequest& request, const LoadedMod
   page.source_kind = "model";
   page.source_path = request.model.filename().string();
   const PageOptions defaults;
-  page.mesh = view::make_display_mesh(model.mesh, defaults.max_facets);
-  if (page.mesh->simplified) {
-    page.notes.push_back(fmt::format(
-        "display mesh simplified from {} to {} facets for the browser; slicing uses every facet",
-        page.mesh->facets_in_model, page.mesh->facets()));
-  }
+  view::NotedDisplayMesh display = view::make_noted_display_mesh(
+      model.mesh, defaults.max_facets, view::SliceStage::NotSlicedYet, view::CountDigits::Plain);
+  page.mesh = std::move(display.mesh);
+  if (display.note) page.notes.push_back(std::move(*display.note));
   page.notes.push_back(
       "not sliced yet: the layers, the section and the report appear once the model is sliced");
   page.check = report;

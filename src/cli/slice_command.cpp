@@ -12,6 +12,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "cli/command.hpp"
 #include "cli/exit_code.hpp"
@@ -22,6 +23,7 @@
 #include "cli/progress.hpp"
 #include "cli/slice_cli_options.hpp"
 #include "cli/slice_report.hpp"
+#include "strata/core/thousands.hpp"
 #include "strata/diagnose/diagnose_mesh.hpp"
 #include "strata/exact/slice_exact.hpp"
 #include "strata/export/cells_writer.hpp"
@@ -64,17 +66,6 @@ Result<std::set<std::string>> parse_formats(const std::string& list) {
   }
   if (formats.empty()) return Error{ErrorCode::Usage, "--format: no format given", {}};
   return formats;
-}
-
-std::string with_thousands(std::uint64_t n) {
-  const std::string digits = std::to_string(n);
-  std::string out;
-  out.reserve(digits.size() + digits.size() / 3);
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out.push_back(',');
-    out.push_back(digits[i]);
-  }
-  return out;
 }
 
 std::string file_url(const fs::path& path) {
@@ -242,12 +233,10 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
     page.source_kind = "model";
     page.source_path = m.path.string();
     page.report_json = report.dump();
-    page.mesh = view::make_display_mesh(m.mesh, o.page.max_facets);
-    if (page.mesh->simplified) {
-      page.notes.push_back(fmt::format(
-          "display mesh simplified from {} to {} facets for the browser; slicing used every facet",
-          with_thousands(page.mesh->facets_in_model), with_thousands(page.mesh->facets())));
-    }
+    view::NotedDisplayMesh display = view::make_noted_display_mesh(
+        m.mesh, o.page.max_facets, view::SliceStage::Sliced, view::CountDigits::GroupedByThousands);
+    page.mesh = std::move(display.mesh);
+    if (display.note) page.notes.push_back(std::move(*display.note));
     if (!mesh_report.self_intersections_checked) {
       page.notes.push_back(
           fmt::format("self-intersections not checked: `strata check {}` or "

@@ -6,6 +6,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <utility>
 
 #include "cli/command.hpp"
 #include "cli/exit_code.hpp"
@@ -215,12 +216,10 @@ int run_view_folder(const ViewCommandOptions& o) {
     diagnose_options.max_locations = page_options.max_defects;
     page.check = diagnose::diagnose_mesh(model->mesh, model->soup, diagnose_options);
     page.model_mesh = &model->mesh;
-    page.mesh = view::make_display_mesh(model->mesh, page_options.max_facets);
-    if (page.mesh->simplified) {
-      page.notes.push_back(fmt::format(
-          "display mesh simplified from {} to {} facets for the browser; slicing used every facet",
-          page.mesh->facets_in_model, page.mesh->facets()));
-    }
+    view::NotedDisplayMesh display = view::make_noted_display_mesh(
+        model->mesh, page_options.max_facets, view::SliceStage::Sliced, view::CountDigits::Plain);
+    page.mesh = std::move(display.mesh);
+    if (display.note) page.notes.push_back(std::move(*display.note));
     // Contours and scanlines come from slicing the model again on the report's grid; the cells
     // shown stay the file's, and any layer where the two differ is named.
     auto options = options_of_report(report);

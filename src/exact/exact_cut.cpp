@@ -1,5 +1,6 @@
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <unordered_map>
 
 #include "exact/exact_cut_internal.hpp"
@@ -95,19 +96,12 @@ ExactLayer cut_layer(const IndexedMesh& mesh, std::span<const FacetIndex> candid
     return it->second;
   };
   for (const FacetIndex f : candidates) {
-    const auto& t = mesh.triangles[f];
-    const bool above[3] = {mesh.vertices[t[0]].z >= z, mesh.vertices[t[1]].z >= z,
-                           mesh.vertices[t[2]].z >= z};
-    const int count = int{above[0]} + int{above[1]} + int{above[2]};
-    if (count == 0 || count == 3) continue;
+    const std::optional<FacetCrossing> crossing = facet_crossing(mesh, f, z);
+    if (!crossing) continue;
     ExactSegment s;
     s.facet = f;
-    for (int e = 0; e < 3; ++e) {
-      const int u = e;
-      const int v = (e + 1) % 3;
-      if (above[u] && !above[v]) s.start_edge = CrossedEdge{t[v], t[u]};
-      if (!above[u] && above[v]) s.end_edge = CrossedEdge{t[u], t[v]};
-    }
+    s.start_edge = crossing->start_edge;
+    s.end_edge = crossing->end_edge;
     s.start = point_on(s.start_edge);
     s.end = point_on(s.end_edge);
     s.zero_length = compare_xy(s.start, s.end) == 0;

@@ -3,27 +3,14 @@
 // Exact rationals of the exact path: the exact number type of CGAL's Epeck (GMP rationals), so
 // values built here feed Epeck points without conversion.
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-
 #include <cstdint>
 #include <vector>
 
+#include "exact/exact_rounding.hpp"
 #include "strata/mesh/indexed_mesh.hpp"
 #include "strata/slice/layer_segments.hpp"
 
 namespace strata::exact::detail {
-
-using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
-using Rational = CGAL::Epeck_ft;
-static_assert(std::is_same_v<Kernel::FT::ET, Rational>, "Epeck's exact number type");
-
-/// The GMP rational under q (valid while q lives).
-mpq_srcptr raw_mpq(const Rational& q);
-
-/// The double nearest to the GMP rational q (ties to even): the one rounding of a constructed
-/// value. Uses a per-thread MPFR scratch value, no global state.
-double round_to_double(mpq_srcptr q);
-inline double round_to_double(const Rational& q) { return round_to_double(raw_mpq(q)); }
 
 /// An exact value with its nearest double, so comparisons with doubles are decided by the double
 /// unless they tie (rounding to nearest is monotone: round(q) < d implies q < d).

@@ -14,6 +14,7 @@
 
 #include "exact/exact_soup_internal.hpp"
 #include "soup/orient_soup_visitor.hpp"
+#include "soup/position_key.hpp"
 
 namespace strata::exact::detail {
 namespace {
@@ -24,33 +25,6 @@ using Mesh = CGAL::Surface_mesh<Point3>;
 using Polygon = std::vector<std::size_t>;
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-
-/// A facet by the set of its corner positions (+0 and -0 alike).
-using FacetKey = std::array<double, 9>;
-
-FacetKey key_of(std::array<Vec3, 3> corners) {
-  for (Vec3& c : corners) c = {c.x + 0.0, c.y + 0.0, c.z + 0.0};
-  std::sort(corners.begin(), corners.end(), [](const Vec3& a, const Vec3& b) {
-    if (a.x != b.x) return a.x < b.x;
-    if (a.y != b.y) return a.y < b.y;
-    return a.z < b.z;
-  });
-  return {corners[0].x, corners[0].y, corners[0].z, corners[1].x, corners[1].y,
-          corners[1].z, corners[2].x, corners[2].y, corners[2].z};
-}
-
-struct FacetKeyHash {
-  std::size_t operator()(const FacetKey& k) const {
-    std::size_t h = 1469598103934665603ull;
-    for (const double d : k) {
-      std::uint64_t bits = 0;
-      std::memcpy(&bits, &d, sizeof bits);
-      h = (h ^ bits) * 1099511628211ull;
-      h ^= h >> 29;
-    }
-    return h;
-  }
-};
 
 bool same_edge(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b) {
   return (p == a && q == b) || (p == b && q == a);
@@ -91,11 +65,8 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
   d.report.points_merged = input.vertices.size() - points.size();
   d.report.polygons_removed = input.triangles.size() - polygons.size();
 
-  soup::OrientSoupCounts counters;
-  const std::size_t points_before = points.size();
-  PMP::orient_polygon_soup(points, polygons,
-                           CGAL::parameters::visitor(soup::OrientSoupVisitor{&counters}));
-  d.report.points_duplicated = points.size() - points_before;
+  const soup::OrientSoupCounts counters = soup::orient_soup(points, polygons);
+  d.report.points_duplicated = counters.points_added;
   d.report.polygons_reversed = counters.reversed;
   d.report.non_manifold_edges = counters.non_manifold_edges.size();
 
@@ -111,11 +82,12 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
 
   // Input facets by corner positions; a position set shared by several facets (duplicates,
   // unwelded copies) maps to none of them.
-  std::unordered_map<FacetKey, std::uint32_t, FacetKeyHash> by_key;
+  std::unordered_map<soup::PositionKey, std::uint32_t, soup::DoublesHash> by_key;
   by_key.reserve(input.triangles.size());
   for (std::size_t f = 0; f < input.triangles.size(); ++f) {
     const auto& t = input.triangles[f];
-    const FacetKey k = key_of({input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]});
+    const soup::PositionKey k =
+        soup::position_key({input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]});
     const auto [it, inserted] = by_key.emplace(k, static_cast<std::uint32_t>(f));
     if (!inserted) it->second = kNone;
   }
@@ -130,8 +102,8 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
       ++corners;
     }
     if (!matches || corners != 3) return;  // not the face of polygon i: no halfedge path at all
-    const FacetKey k =
-        key_of({d.vertex_position[p[0]], d.vertex_position[p[1]], d.vertex_position[p[2]]});
+    const soup::PositionKey k = soup::position_key(
+        {d.vertex_position[p[0]], d.vertex_position[p[1]], d.vertex_position[p[2]]});
     const auto it = by_key.find(k);
     if (it == by_key.end() || it->second == kNone) continue;
     d.face_facet[i] = it->second;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -49,29 +50,23 @@ class BinaryCellsWriter final : public detail::SingleFileSink {
   }
 
   Result<void> write_layer(OutputFile& out, const LayerResult& layer) override {
-    const std::vector<CellClass>& cells = layer.cells;
-    const std::uint64_t n = cells.size();
+    const std::span<const CellClass> cells = layer.cells;
+    const std::size_t n = cells.size();
     std::string chunk;
     chunk.reserve(kChunkBytes);
-    // 4 cells a byte, the first in the two most significant bits; the last byte of the layer is
-    // padded with zero bits.
-    for (std::uint64_t base = 0; base < n; base += 4) {
-      unsigned byte = 0;
-      const std::uint64_t end = std::min<std::uint64_t>(base + 4, n);
-      for (std::uint64_t idx = base; idx < end; ++idx) {
-        const auto code = static_cast<unsigned>(cells[idx]);
+    for (std::size_t base = 0; base < n; base += 4 * kChunkBytes) {
+      const std::span<const CellClass> part =
+          cells.subspan(base, std::min(4 * kChunkBytes, n - base));
+      for (std::size_t idx = 0; idx < part.size(); ++idx) {
+        const auto code = static_cast<unsigned>(part[idx]);
         if (code == 0b10 || code > 0b11) {
-          return reserved_code_error(layer.layer, idx, run().grid.nx, cells[idx]);
+          return reserved_code_error(layer.layer, base + idx, run().grid.nx, part[idx]);
         }
-        byte |= code << (6 - 2 * (idx - base));
       }
-      chunk.push_back(static_cast<char>(byte));
-      if (chunk.size() == kChunkBytes) {
-        out.write(chunk);
-        chunk.clear();
-      }
+      chunk.clear();
+      append_packed_cells(part, chunk);
+      out.write(chunk);
     }
-    out.write(chunk);
     return {};
   }
 };

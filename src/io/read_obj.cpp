@@ -14,30 +14,18 @@
 #include <string_view>
 
 #include "io/read_mesh_internal.hpp"
+#include "io/text_format_internal.hpp"
 #include "strata/io/scan_number.hpp"
 
 namespace strata::io::detail {
 namespace {
 
-std::string quote(std::string_view text) {
-  constexpr std::size_t kMaxChars = 40;
-  std::string out = "'";
-  for (std::size_t i = 0; i < text.size() && i < kMaxChars; ++i) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    if (c < 0x20 || c == 0x7f) {
-      out += fmt::format("\\x{:02x}", c);
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  if (text.size() > kMaxChars) out += "...";
-  return out + "'";
-}
+std::string quote(std::string_view text) { return quote_input(text, 40); }
 
 class ObjReader {
  public:
   ObjReader(std::string_view text, std::string_view name, const ReadLimits& limits)
-      : text_(text), name_(name), limits_(limits) {}
+      : name_(name), limits_(limits), lines_(text, limits.max_line_bytes) {}
 
   Result<PolygonSoup> read();
   Diagnostics take_diagnostics() {
@@ -49,7 +37,6 @@ class ObjReader {
  private:
   /// The next logical line (continuations joined into `joined_`); false at the end.
   bool next_line(std::string_view& line);
-  bool next_physical_line(std::string_view& line);
   std::string location() const { return fmt::format("{}:{}", name_, statement_line_); }
   Error error_here(std::string message) const {
     return Error{ErrorCode::BadInput, std::move(message), location()};
@@ -57,44 +44,19 @@ class ObjReader {
   Result<void> read_vertex(std::string_view rest);
   Result<void> read_face(std::string_view rest);
 
-  std::string_view text_;
   std::string_view name_;
   const ReadLimits& limits_;
-  std::size_t pos_ = 0;
-  std::size_t line_number_ = 0;
+  detail::TextLines lines_;
   std::size_t statement_line_ = 0;
-  bool line_too_long_ = false;
+  bool joined_too_long_ = false;
   std::string joined_;
   PolygonSoup soup_;
   DiagnosticTally tally_{"line"};
 };
 
-bool ObjReader::next_physical_line(std::string_view& line) {
-  const std::size_t size = text_.size();
-  if (pos_ >= size) return false;
-  ++line_number_;
-  const char* begin = text_.data() + pos_;
-  const std::size_t available = size - pos_;
-  const std::size_t window = std::min(available, limits_.max_line_bytes + 1);
-  const char* end_of_window = begin + window;
-  const char* eol = begin;
-  while (eol < end_of_window && *eol != '\n' && *eol != '\r') ++eol;
-  if (eol == end_of_window && available > limits_.max_line_bytes) {
-    line_too_long_ = true;
-    return false;
-  }
-  line = std::string_view(begin, static_cast<std::size_t>(eol - begin));
-  pos_ += line.size();
-  if (pos_ < size) {
-    const bool crlf = text_[pos_] == '\r' && pos_ + 1 < size && text_[pos_ + 1] == '\n';
-    pos_ += crlf ? 2 : 1;
-  }
-  return true;
-}
-
 bool ObjReader::next_line(std::string_view& line) {
-  if (!next_physical_line(line)) return false;
-  statement_line_ = line_number_;
+  if (!lines_.next(line)) return false;
+  statement_line_ = lines_.number();
   auto continued = [](std::string_view text) {
     while (!text.empty() && is_blank(text.back())) text.remove_suffix(1);
     return !text.empty() && text.back() == '\\';
@@ -112,27 +74,20 @@ bool ObjReader::next_line(std::string_view& line) {
     joined_ += piece;
     joined_ += ' ';
     if (joined_.size() > limits_.max_line_bytes) {
-      line_too_long_ = true;
+      joined_too_long_ = true;
       return false;
     }
-    if (!next_physical_line(piece)) break;
+    if (!lines_.next(piece)) break;
   }
   line = joined_;
   return true;
 }
 
 Result<void> ObjReader::read_vertex(std::string_view rest) {
+  // double, not rounded: SPEC §2
   std::array<double, 3> p{};
-  for (int k = 0; k < 3; ++k) {
-    const std::string_view token = next_token(rest);
-    if (token.empty()) {
-      return error_here(
-          fmt::format("vertex has {} coordinate{}, expected 3", k, k == 1 ? "" : "s"));
-    }
-    const ScannedNumber<double> scanned = scan_real(token);  // double, not rounded: SPEC §2
-    if (!scanned.ok()) return bad_number(location(), token, scanned);
-    p[k] = scanned.value;
-  }
+  const auto here = [&] { return location(); };
+  if (auto r = scan_vertex(rest, NumberType::Float64, here, p); !r) return r;
   soup_.points.push_back(p);
   return {};
 }
@@ -193,10 +148,10 @@ Result<PolygonSoup> ObjReader::read() {
       });
     }
   }
-  if (line_too_long_) {
+  if (joined_too_long_ || lines_.too_long()) {
     return Error{ErrorCode::BadInput,
                  fmt::format("line longer than the limit of {} bytes", limits_.max_line_bytes),
-                 fmt::format("{}:{}", name_, line_number_)};
+                 fmt::format("{}:{}", name_, lines_.number())};
   }
   return std::move(soup_);
 }

@@ -14,6 +14,7 @@
 #include "io/little_endian.hpp"
 #include "io/read_mesh_internal.hpp"
 #include "io/stl_format_internal.hpp"
+#include "io/text_format_internal.hpp"
 #include "strata/io/read_mesh.hpp"
 #include "strata/io/scan_number.hpp"
 
@@ -41,23 +42,7 @@ std::string facet_location(std::string_view name, std::size_t facet) {
   return fmt::format("{}: facet {}", name, facet);
 }
 
-/// Quotes a piece of input for a message, cut short and with control bytes replaced, so that a
-/// binary file read as text cannot fill a terminal with garbage.
-std::string quote(std::string_view text) {
-  constexpr std::size_t kMaxChars = 60;
-  std::string out = "'";
-  for (std::size_t i = 0; i < text.size() && i < kMaxChars; ++i) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    if (c < 0x20 || c == 0x7f) {
-      out += fmt::format("\\x{:02x}", c);
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  if (text.size() > kMaxChars) out += "...";
-  out += "'";
-  return out;
-}
+std::string quote(std::string_view text) { return detail::quote_input(text, 60); }
 
 // ---------------------------------------------------------------------------------------------
 // Binary
@@ -198,7 +183,7 @@ Keyword classify(std::string_view token) {
 class AsciiStlParser {
  public:
   AsciiStlParser(std::string_view text, std::string_view name, const ReadLimits& limits)
-      : text_(text), name_(name), limits_(limits) {}
+      : text_(text), name_(name), limits_(limits), lines_(text, limits.max_line_bytes) {}
 
   Result<TriangleSoup> parse();
 
@@ -209,10 +194,8 @@ class AsciiStlParser {
  private:
   enum class State { Top, InSolid, InFacet };
 
-  /// Moves to the next line; false at the end of the text or on a line that is too long.
-  bool next_line(std::string_view& line);
   Error error_here(std::string message) const {
-    return bad_input(line_location(name_, line_number_), std::move(message));
+    return bad_input(line_location(name_, lines_.number()), std::move(message));
   }
   void begin_facet(std::string_view rest);
   Result<void> add_vertex(std::string_view rest);
@@ -222,9 +205,7 @@ class AsciiStlParser {
   std::string_view text_;
   std::string_view name_;
   const ReadLimits& limits_;
-  std::size_t pos_ = 0;
-  std::size_t line_number_ = 0;
-  bool line_too_long_ = false;
+  detail::TextLines lines_;
   bool recognised_ = false;
 
   TriangleSoup soup_;
@@ -235,33 +216,9 @@ class AsciiStlParser {
   std::size_t skipped_facets_ = 0;
 };
 
-bool AsciiStlParser::next_line(std::string_view& line) {
-  const std::size_t size = text_.size();
-  if (pos_ >= size) return false;
-  ++line_number_;
-  const char* begin = text_.data() + pos_;
-  const std::size_t available = size - pos_;
-  const std::size_t window = std::min(available, limits_.max_line_bytes + 1);
-  const char* end_of_window = begin + window;
-  const char* eol = begin;
-  // CR, LF, CRLF and bare-CR files all occur in the wild.
-  while (eol < end_of_window && *eol != '\n' && *eol != '\r') ++eol;
-  if (eol == end_of_window && available > limits_.max_line_bytes) {
-    line_too_long_ = true;
-    return false;
-  }
-  line = std::string_view(begin, static_cast<std::size_t>(eol - begin));
-  pos_ += line.size();
-  if (pos_ < size) {
-    const bool crlf = text_[pos_] == '\r' && pos_ + 1 < size && text_[pos_ + 1] == '\n';
-    pos_ += crlf ? 2 : 1;
-  }
-  return true;
-}
-
 void AsciiStlParser::begin_facet(std::string_view rest) {
   facet_vertices_.clear();
-  facet_line_ = line_number_;
+  facet_line_ = lines_.number();
   facet_normal_ = Vec3{};
   const std::string_view after_facet = trim(rest);
   const std::string_view word = next_token(rest);
@@ -276,16 +233,16 @@ void AsciiStlParser::begin_facet(std::string_view rest) {
     n[k] = scanned.value;
   }
   if (!ok) {
-    tally_.add("stl.bad_normal", Severity::Warning, line_number_, [&] {
+    tally_.add("stl.bad_normal", Severity::Warning, lines_.number(), [&] {
       // Without values there is no word either: `values` is all of the line after `facet`
       // when it does not start with `normal`.
       return values.empty()
                  ? fmt::format("{}: facet has no stored normal values; the facet is kept",
-                               line_location(name_, line_number_))
+                               line_location(name_, lines_.number()))
                  : fmt::format(
                        "{}: stored normal {} is not three finite numbers; the normal is "
                        "ignored, the facet kept",
-                       line_location(name_, line_number_), quote(values));
+                       line_location(name_, lines_.number()), quote(values));
     });
     return;
   }
@@ -295,16 +252,8 @@ void AsciiStlParser::begin_facet(std::string_view rest) {
 
 Result<void> AsciiStlParser::add_vertex(std::string_view rest) {
   std::array<double, 3> p{};
-  for (int k = 0; k < 3; ++k) {
-    const std::string_view token = next_token(rest);
-    if (token.empty()) {
-      return error_here(
-          fmt::format("vertex has {} coordinate{}, expected 3", k, k == 1 ? "" : "s"));
-    }
-    const ScannedNumber<double> scanned = scan_real(token, NumberType::Float32);
-    if (!scanned.ok()) return bad_number(line_location(name_, line_number_), token, scanned);
-    p[k] = scanned.value;
-  }
+  const auto here = [&] { return line_location(name_, lines_.number()); };
+  if (auto r = detail::scan_vertex(rest, NumberType::Float32, here, p); !r) return r;
   const std::string_view extra = next_token(rest);
   if (!extra.empty()) {
     return error_here(
@@ -344,9 +293,9 @@ Result<void> AsciiStlParser::finish_facet() {
 void AsciiStlParser::note_trailing(std::string_view keyword, std::string_view rest) {
   const std::string_view extra = trim(rest);
   if (extra.empty()) return;
-  tally_.add("stl.trailing_tokens", Severity::Warning, line_number_, [&] {
+  tally_.add("stl.trailing_tokens", Severity::Warning, lines_.number(), [&] {
     return fmt::format("{}: unexpected text {} after '{}' ignored",
-                       line_location(name_, line_number_), quote(extra), keyword);
+                       line_location(name_, lines_.number()), quote(extra), keyword);
   });
 }
 
@@ -357,7 +306,7 @@ Result<TriangleSoup> AsciiStlParser::parse() {
   std::size_t solid_line = 0;
   std::string_view line;
 
-  while (next_line(line)) {
+  while (lines_.next(line)) {
     std::string_view rest = line;
     const std::string_view word = next_token(rest);
     if (word.empty()) continue;
@@ -366,24 +315,24 @@ Result<TriangleSoup> AsciiStlParser::parse() {
     if (state == State::Top) {
       if (keyword == Keyword::Solid) {
         ++solids;
-        solid_line = line_number_;
+        solid_line = lines_.number();
         state = State::InSolid;
         continue;
       }
       if (keyword == Keyword::Facet && solids > 0) {
-        tally_.add("stl.facet_outside_solid", Severity::Warning, line_number_, [&] {
+        tally_.add("stl.facet_outside_solid", Severity::Warning, lines_.number(), [&] {
           return fmt::format("{}: facets after 'endsolid' without a new 'solid' line; read anyway",
-                             line_location(name_, line_number_));
+                             line_location(name_, lines_.number()));
         });
         state = State::InSolid;  // falls through to the facet below
       } else if (solids > 0) {
         // Some exporters pad the file after the last solid; nothing in it is a facet.
         const std::size_t ignored = text_.size() - (line.data() - text_.data());
-        tally_.add("stl.content_after_endsolid", Severity::Warning, line_number_, [&] {
+        tally_.add("stl.content_after_endsolid", Severity::Warning, lines_.number(), [&] {
           return fmt::format("{}: {} bytes after the last 'endsolid' ignored (starting {})",
-                             line_location(name_, line_number_), ignored, quote(line));
+                             line_location(name_, lines_.number()), ignored, quote(line));
         });
-        pos_ = text_.size();
+        lines_.skip_rest();
         break;
       } else {
         return error_here(fmt::format("expected 'solid', found {}", quote(word)));
@@ -418,7 +367,7 @@ Result<TriangleSoup> AsciiStlParser::parse() {
         case Keyword::Solid:
           tally_.add("stl.missing_endfacet", Severity::Warning, facet_line_, [&] {
             return fmt::format("{}: facet has no 'endfacet' line; read up to line {}",
-                               line_location(name_, facet_line_), line_number_);
+                               line_location(name_, facet_line_), lines_.number());
           });
           if (auto r = finish_facet(); !r) return r.error();
           state = State::InSolid;
@@ -451,7 +400,7 @@ Result<TriangleSoup> AsciiStlParser::parse() {
           return fmt::format("{}: solid has no 'endsolid' line", line_location(name_, solid_line));
         });
         ++solids;
-        solid_line = line_number_;
+        solid_line = lines_.number();
         break;
       case Keyword::Vertex:
       case Keyword::Outer:
@@ -463,19 +412,19 @@ Result<TriangleSoup> AsciiStlParser::parse() {
     }
   }
 
-  if (line_too_long_) {
-    return bad_input(line_location(name_, line_number_),
+  if (lines_.too_long()) {
+    return bad_input(line_location(name_, lines_.number()),
                      fmt::format("line longer than the limit of {} bytes", limits_.max_line_bytes));
   }
   if (state == State::InFacet) {
     return bad_input(
-        line_location(name_, line_number_),
+        line_location(name_, lines_.number()),
         fmt::format("file ends inside the facet that starts at line {} (truncated?)", facet_line_));
   }
   if (state == State::InSolid) {
     tally_.add("stl.missing_endsolid", Severity::Warning, solid_line, [&] {
       return fmt::format("{}: solid has no 'endsolid' line (file ends at line {})",
-                         line_location(name_, solid_line), line_number_);
+                         line_location(name_, solid_line), lines_.number());
     });
   }
   if (soup_.triangles.empty()) {

@@ -27,11 +27,15 @@
 #include "diagnose/exact_geometry.hpp"
 #include "repair/repair_internal.hpp"
 #include "soup/orient_soup_visitor.hpp"
+#include "soup/position_key.hpp"
 
 namespace strata::repair::detail {
 namespace {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
+using soup::DoublesHash;
+using soup::position_key;
+using soup::PositionKey;
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
@@ -50,35 +54,6 @@ Vec3 to_vec3(const Point& p) {
   // Epick points hold the doubles they were built from: exact.
   return {p.x(), p.y(), p.z()};
 }
-
-/// A triangle by the set of its corner positions (+0 and -0 alike).
-using PositionKey = std::array<double, 9>;
-
-PositionKey position_key(std::array<Vec3, 3> corners) {
-  for (Vec3& c : corners) c = {c.x + 0.0, c.y + 0.0, c.z + 0.0};
-  std::sort(corners.begin(), corners.end(), [](const Vec3& a, const Vec3& b) {
-    if (a.x != b.x) return a.x < b.x;
-    if (a.y != b.y) return a.y < b.y;
-    return a.z < b.z;
-  });
-  return {corners[0].x, corners[0].y, corners[0].z, corners[1].x, corners[1].y,
-          corners[1].z, corners[2].x, corners[2].y, corners[2].z};
-}
-
-/// FNV-style hash of an array of doubles by their bits (keys hold no -0: +0.0 was added).
-struct DoublesHash {
-  template <std::size_t N>
-  std::size_t operator()(const std::array<double, N>& k) const {
-    std::uint64_t h = 1469598103934665603ull;
-    for (const double d : k) {
-      std::uint64_t bits = 0;
-      std::memcpy(&bits, &d, sizeof bits);
-      h = (h ^ bits) * 1099511628211ull;
-      h ^= h >> 29;
-    }
-    return static_cast<std::size_t>(h);
-  }
-};
 
 /// True when `corners` runs the triangle `reference` (same three positions) the other way round.
 bool runs_reversed(const std::array<Vec3, 3>& corners, const std::array<Vec3, 3>& reference) {
@@ -425,11 +400,8 @@ std::vector<OutputFacet> orient_and_close(const CleanSoup& clean, const RepairOp
     return {};
   }
 
-  soup::OrientSoupCounts counters;
-  const std::size_t points_before = points.size();
-  PMP::orient_polygon_soup(points, polygons,
-                           CGAL::parameters::visitor(soup::OrientSoupVisitor{&counters}));
-  log.vertex_copies_added = points.size() - points_before;
+  const soup::OrientSoupCounts counters = soup::orient_soup(points, polygons);
+  log.vertex_copies_added = counters.points_added;
   log.non_manifold_vertices_split = counters.non_manifold_vertices.size();
   log.non_manifold_edges = counters.non_manifold_edges.size();
 

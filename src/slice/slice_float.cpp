@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 #include "predicates/crossing_predicates.hpp"
 #include "predicates/grid_search.hpp"
@@ -67,30 +68,14 @@ LayerSegments slice_layer(const IndexedMesh& mesh, std::span<const FacetIndex> c
   out.layer = layer;
   out.z_mm = grid.zk(layer);
   const double z = out.z_mm;
+  const auto point_on = [&](const CrossedEdge& edge) {
+    return detail::crossing_point(mesh.vertices[edge.below], mesh.vertices[edge.above], z);
+  };
   for (const FacetIndex f : candidates) {
-    const auto& t = mesh.triangles[f];
-    const bool above[3] = {mesh.vertices[t[0]].z >= z, mesh.vertices[t[1]].z >= z,
-                           mesh.vertices[t[2]].z >= z};
-    const int count = int{above[0]} + int{above[1]} + int{above[2]};
-    if (count == 0 || count == 3) continue;
-    LayerSegment segment;
-    segment.facet = f;
-    // Walk the facet's edges in its vertex order: the edge going down through the plane starts
-    // the segment, the edge going up ends it, so the material lies on the segment's left.
-    for (int e = 0; e < 3; ++e) {
-      const int u = e;
-      const int v = (e + 1) % 3;
-      if (above[u] && !above[v]) {
-        segment.start_edge = CrossedEdge{t[v], t[u]};
-      } else if (!above[u] && above[v]) {
-        segment.end_edge = CrossedEdge{t[u], t[v]};
-      }
+    if (const std::optional<FacetCrossing> c = facet_crossing(mesh, f, z)) {
+      out.segments.push_back(LayerSegment{f, c->start_edge, c->end_edge, point_on(c->start_edge),
+                                          point_on(c->end_edge)});
     }
-    segment.start = detail::crossing_point(mesh.vertices[segment.start_edge.below],
-                                           mesh.vertices[segment.start_edge.above], z);
-    segment.end = detail::crossing_point(mesh.vertices[segment.end_edge.below],
-                                         mesh.vertices[segment.end_edge.above], z);
-    out.segments.push_back(segment);
   }
   return out;
 }

@@ -1,7 +1,7 @@
 #pragma once
 
 // Shared by the exact path, repair and the reference slicer: every user of CGAL's
-// orient_polygon_soup counts what it did in the same way.
+// orient_polygon_soup calls it and counts what it did in the same way.
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 
@@ -18,6 +18,8 @@ struct OrientSoupCounts {
   std::uint64_t reversed = 0;  ///< polygons whose orientation it reversed
   std::set<std::pair<std::size_t, std::size_t>> non_manifold_edges;  ///< point pairs, smaller first
   std::set<std::size_t> non_manifold_vertices;                       ///< points it duplicated
+  std::size_t points_added = 0;  ///< copies of points it made to split non-manifold places
+  bool oriented = false;         ///< its result: every polygon could be oriented consistently
 };
 
 /// The visitor that fills OrientSoupCounts. CGAL copies the visitor, so the counts live outside
@@ -32,5 +34,16 @@ struct OrientSoupVisitor : CGAL::Polygon_mesh_processing::Default_orientation_vi
   void non_manifold_vertex(std::size_t v, std::size_t) { counts->non_manifold_vertices.insert(v); }
   void polygon_orientation_reversed(std::size_t) { ++counts->reversed; }
 };
+
+/// Orients the soup in place with CGAL's orient_polygon_soup and returns what it did.
+template <class PointRange, class PolygonRange>
+OrientSoupCounts orient_soup(PointRange& points, PolygonRange& polygons) {
+  OrientSoupCounts counts;
+  const std::size_t points_before = points.size();
+  counts.oriented = CGAL::Polygon_mesh_processing::orient_polygon_soup(
+      points, polygons, CGAL::parameters::visitor(OrientSoupVisitor{&counts}));
+  counts.points_added = points.size() - points_before;
+  return counts;
+}
 
 }  // namespace strata::soup

@@ -15,7 +15,6 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <fmt/format.h>
-#include <gmpxx.h>
 
 #include <algorithm>
 #include <array>
@@ -29,6 +28,7 @@
 #include <set>
 #include <utility>
 
+#include "exact/exact_rounding.hpp"
 #include "soup/orient_soup_visitor.hpp"
 #include "strata/validate/contour_metrics.hpp"
 #include "validate/model_scale_internal.hpp"
@@ -76,28 +76,10 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-mpq_srcptr raw_of(const mpq_class& q) { return q.get_mpq_t(); }
-#ifdef CGAL_USE_GMP
-[[maybe_unused]] mpq_srcptr raw_of(const CGAL::Gmpq& q) { return q.mpq(); }
-#endif
-
-/// The double nearest to an exact rational (ties to even): mpq_get_d truncates towards zero, so
-/// the nearest double is that one or its neighbour away from zero, told apart by their exact
-/// midpoint. The exact path rounds its points the same way, so equal exact points give equal
-/// doubles.
+/// The double nearest to an exact value (ties to even), rounded as the exact path rounds its
+/// points, so equal exact points give equal doubles.
 double nearest_double(const Kernel::FT& value) {
-  const mpq_class exact(raw_of(CGAL::exact(value)));
-  const double d = exact.get_d();
-  const int s = sgn(exact);
-  if (s == 0 || mpq_class(d) == exact) return d;
-  const double away = std::nextafter(d, s > 0 ? HUGE_VAL : -HUGE_VAL);
-  const mpq_class mid = (mpq_class(d) + mpq_class(away)) / 2;
-  const int c = s > 0 ? cmp(exact, mid) : -cmp(exact, mid);
-  if (c < 0) return d;
-  if (c > 0) return away;
-  std::uint64_t bits = 0;
-  std::memcpy(&bits, &d, sizeof bits);
-  return (bits & 1) == 0 ? d : away;
+  return exact::detail::round_to_double(CGAL::exact(value));
 }
 
 double shoelace(const std::vector<Point2>& points) {
@@ -215,11 +197,9 @@ void ReferenceSlicer::Impl::build(const IndexedMesh& input) {
     // non-manifold vertices and edges, and only reverses facets otherwise.
     std::vector<Point3> copy_points = points;
     std::vector<Polygon> copy_polygons = polygons;
-    soup::OrientSoupCounts counters;
-    const bool oriented = PMP::orient_polygon_soup(
-        copy_points, copy_polygons, CGAL::parameters::visitor(soup::OrientSoupVisitor{&counters}));
-    const std::size_t duplicated = copy_points.size() - points.size();
-    if (!oriented || duplicated > 0 || !counters.non_manifold_edges.empty()) {
+    const soup::OrientSoupCounts counters = soup::orient_soup(copy_points, copy_polygons);
+    const std::size_t duplicated = counters.points_added;
+    if (!counters.oriented || duplicated > 0 || !counters.non_manifold_edges.empty()) {
       refuse(ReferenceSkip::NonManifold,
              fmt::format("not a 2-manifold: {} non-manifold edges; orienting the facets "
                          "duplicates {} points",

@@ -4,7 +4,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "validate/cell_code_internal.hpp"
+#include "strata/voxel/cell_code.hpp"
 
 namespace strata::validate {
 
@@ -155,8 +155,8 @@ std::string validation_json(const ValidationReport& r) {
     listed.push_back({{"i", d.i},
                       {"j", d.j},
                       {"k", d.k},
-                      {"fast", detail::cell_code(d.fast)},
-                      {"exact", detail::cell_code(d.exact)},
+                      {"fast", cell_code(d.fast)},
+                      {"exact", cell_code(d.exact)},
                       {"reason", to_string(d.reason)}});
   }
   out["cells"] = {{"layers_compared", r.layers_compared},
@@ -193,8 +193,8 @@ std::string validation_json(const ValidationReport& r) {
     offset_cells.push_back({{"i", c.i},
                             {"j", c.j},
                             {"k", c.k},
-                            {"with_offset", detail::cell_code(c.with_offset)},
-                            {"without_offset", detail::cell_code(c.without_offset)}});
+                            {"with_offset", cell_code(c.with_offset)},
+                            {"without_offset", cell_code(c.without_offset)}});
   }
   out["scan_offset"] = {{"measured", r.scan_offset.measured},
                         {"offset_mm", r.scan_offset.offset_mm},

@@ -7,7 +7,8 @@
 #include <tuple>
 #include <vector>
 
-#include "validate/cell_code_internal.hpp"
+#include "strata/core/thousands.hpp"
+#include "strata/voxel/cell_code.hpp"
 
 namespace strata::validate {
 
@@ -15,17 +16,6 @@ namespace {
 
 constexpr std::size_t kListedInText = 20;
 constexpr std::size_t kWorstLayers = 5;
-
-std::string thousands(std::uint64_t n) {
-  const std::string digits = std::to_string(n);
-  std::string out;
-  out.reserve(digits.size() + digits.size() / 3);
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out.push_back(',');
-    out.push_back(digits[i]);
-  }
-  return out;
-}
 
 std::string mm(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "inf"; }
 
@@ -84,8 +74,8 @@ std::string reference_text(const ReferenceSlicerFigures& f) {
   out += fmt::format(
       "          {} polylines: {} open ({} still open after joining them at shared points), {} "
       "single points{}\n",
-      thousands(f.polylines), thousands(f.open_polylines), thousands(f.open_after_joining),
-      thousands(f.isolated_points),
+      with_thousands(f.polylines), with_thousands(f.open_polylines),
+      with_thousands(f.open_after_joining), with_thousands(f.isolated_points),
       f.degenerate_facets_dropped > 0
           ? fmt::format("; {} facets with a repeated corner left out", f.degenerate_facets_dropped)
           : std::string());
@@ -112,33 +102,32 @@ std::string validation_text(const ValidationReport& r) {
     out += fmt::format("cells     NOT VALIDATED: the exact path stopped: {}\n",
                        r.exact_error->to_string());
     if (r.layers_compared > 0) {
-      out +=
-          fmt::format("          before that, {} of {} cells differed in {} layers\n",
-                      thousands(r.cells_differing), thousands(r.cells_compared), r.layers_compared);
+      out += fmt::format("          before that, {} of {} cells differed in {} layers\n",
+                         with_thousands(r.cells_differing), with_thousands(r.cells_compared),
+                         r.layers_compared);
     }
   } else if (r.cells_differing == 0) {
     out += fmt::format("cells     AGREE: {} cells compared in {} layers, none differs\n",
-                       thousands(r.cells_compared), r.layers_compared);
+                       with_thousands(r.cells_compared), r.layers_compared);
   } else {
     std::vector<std::string> parts;
     for (std::size_t q = 0; q < kDifferenceReasonCount; ++q) {
       if (r.differing_by_reason[q] == 0) continue;
       parts.push_back(fmt::format("{} {}", to_string(static_cast<DifferenceReason>(q)),
-                                  thousands(r.differing_by_reason[q])));
+                                  with_thousands(r.differing_by_reason[q])));
     }
-    out += fmt::format("cells     DIFFER: {} of {} cells ({})\n", thousands(r.cells_differing),
-                       thousands(r.cells_compared), fmt::join(parts, ", "));
+    out += fmt::format("cells     DIFFER: {} of {} cells ({})\n", with_thousands(r.cells_differing),
+                       with_thousands(r.cells_compared), fmt::join(parts, ", "));
     const std::size_t shown = std::min(kListedInText, r.differences.size());
     for (std::size_t q = 0; q < shown; ++q) {
       const CellDifference& d = r.differences[q];
-      out +=
-          fmt::format("          cell ({}, {}, {}) at ({}, {}, {}) mm: fast {}, exact {}: {}\n",
-                      d.i, d.j, d.k, mm(g.xc(d.i)), mm(g.yc(d.j)), mm(g.zk(d.k)),
-                      detail::cell_code(d.fast), detail::cell_code(d.exact), to_string(d.reason));
+      out += fmt::format("          cell ({}, {}, {}) at ({}, {}, {}) mm: fast {}, exact {}: {}\n",
+                         d.i, d.j, d.k, mm(g.xc(d.i)), mm(g.yc(d.j)), mm(g.zk(d.k)),
+                         cell_code(d.fast), cell_code(d.exact), to_string(d.reason));
     }
     if (r.cells_differing > shown) {
       out += fmt::format("          ... {} more (the JSON report lists {})\n",
-                         thousands(r.cells_differing - shown), r.differences.size());
+                         with_thousands(r.cells_differing - shown), r.differences.size());
     }
   }
 
@@ -217,16 +206,16 @@ std::string validation_text(const ValidationReport& r) {
     out += fmt::format(
         "surface-to-shell  {} mm: the farthest of {} surface points from the nearest boundary "
         "cell centre (a cell diagonal is {} mm)\n",
-        mm(*m.surface_to_boundary_mm), thousands(m.surface_samples),
+        mm(*m.surface_to_boundary_mm), with_thousands(m.surface_samples),
         mm(std::sqrt(g.dx * g.dx + g.dy * g.dy + g.dz * g.dz)));
   }
   if (m.shell.measured > 0) {
     out += fmt::format(
         "shell     asked t = {} mm ({}); interior cells next to the shell: {}{}; their distance "
         "to the surface: min {} mm, mean {} mm, max {} mm\n",
-        m.asked_shell_mm, to_string(r.options.shell_mode), thousands(m.shell.cells),
+        m.asked_shell_mm, to_string(r.options.shell_mode), with_thousands(m.shell.cells),
         m.shell.measured < m.shell.cells
-            ? fmt::format(" ({} measured)", thousands(m.shell.measured))
+            ? fmt::format(" ({} measured)", with_thousands(m.shell.measured))
             : std::string(),
         mm(m.shell.min_mm), mm(m.shell.mean_mm), mm(m.shell.max_mm));
   } else {
@@ -237,16 +226,16 @@ std::string validation_text(const ValidationReport& r) {
   // Scan offset.
   if (r.scan_offset.measured) {
     out += fmt::format("offset    the scan offset of {} mm changes {} cells\n",
-                       r.scan_offset.offset_mm, thousands(r.scan_offset.cells_changed));
+                       r.scan_offset.offset_mm, with_thousands(r.scan_offset.cells_changed));
     const std::size_t shown = std::min(kListedInText, r.scan_offset.cells.size());
     for (std::size_t q = 0; q < shown; ++q) {
       const OffsetChange& c = r.scan_offset.cells[q];
-      out +=
-          fmt::format("          cell ({}, {}, {}): {} with the offset, {} without\n", c.i, c.j,
-                      c.k, detail::cell_code(c.with_offset), detail::cell_code(c.without_offset));
+      out += fmt::format("          cell ({}, {}, {}): {} with the offset, {} without\n", c.i, c.j,
+                         c.k, cell_code(c.with_offset), cell_code(c.without_offset));
     }
     if (r.scan_offset.cells_changed > shown) {
-      out += fmt::format("          ... {} more\n", thousands(r.scan_offset.cells_changed - shown));
+      out += fmt::format("          ... {} more\n",
+                         with_thousands(r.scan_offset.cells_changed - shown));
     }
   }
 

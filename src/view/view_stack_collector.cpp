@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "strata/io/cells_format.hpp"
 #include "strata/view/view_stack.hpp"
 #include "view/encode_internal.hpp"
 
@@ -11,16 +12,6 @@ namespace strata::view {
 namespace {
 
 /// Packs a layer as the .cells file does: 4 cells a byte, the first in the high bits.
-std::string pack_cells(const std::vector<CellClass>& cells) {
-  std::string packed((cells.size() + 3) / 4, '\0');
-  for (std::size_t idx = 0; idx < cells.size(); ++idx) {
-    const auto code = static_cast<unsigned>(cells[idx]);
-    packed[idx / 4] = static_cast<char>(static_cast<unsigned char>(packed[idx / 4]) |
-                                        (code << (6 - 2 * (idx % 4))));
-  }
-  return packed;
-}
-
 std::uint32_t blocks_along(std::uint32_t n, std::uint32_t max_blocks) {
   return std::max<std::uint32_t>(1, (n + max_blocks - 1) / max_blocks);
 }
@@ -66,7 +57,9 @@ Result<void> ViewStackCollector::begin(const SliceRunInfo& run) {
 Result<void> ViewStackCollector::add_layer(const LayerResult& layer) {
   const GridSpec& g = stack_.grid;
   stack_.stored.push_back(layer.layer);
-  stack_.cells_zlib.push_back(detail::zlib_compress(pack_cells(layer.cells)));
+  std::string packed;
+  io::append_packed_cells(layer.cells, packed);
+  stack_.cells_zlib.push_back(detail::zlib_compress(packed));
 
   ViewVolume& v = stack_.volume;
   std::uint8_t* plane = v.blocks.data() + std::size_t{layer.layer / v.bz} * v.ny * v.nx;

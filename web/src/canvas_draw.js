@@ -1,6 +1,13 @@
 // Drawing helpers shared by the 2D views.
 
-import { GRID_LINE } from './palette.js';
+import { CANVAS_BACKGROUND, GRID_LINE } from './palette.js';
+
+/** Fills the whole canvas with the 2D views' background, in device pixels. */
+export function clearCanvas(ctx, canvas) {
+  ctx.setTransform(1, 0, 0, 1, 0, 0);
+  ctx.fillStyle = CANVAS_BACKGROUND;
+  ctx.fillRect(0, 0, canvas.width, canvas.height);
+}
 
 /** A centred note on a canvas (for "decoding…" and errors). */
 export function drawMessage(ctx, canvas, dpr, text) {
@@ -42,6 +49,30 @@ export function drawCellGrid(ctx, vp, x0, y0, dx, dy, nx, ny) {
   ctx.strokeStyle = GRID_LINE;
   ctx.lineWidth = 1;
   ctx.stroke();
+}
+
+/**
+ * A cell image (one pixel a cell, its first row the cells at b0 + nb * db) drawn pixel-sharp over
+ * the na x nb cells from (a0, b0) of size da x db, with the lines between cells when zoomed in
+ * far enough. Returns the cells' rectangle on the canvas, {left, top, right, bottom}.
+ */
+export function drawCellImage(ctx, vp, image, a0, b0, da, db, na, nb) {
+  const [left, top] = vp.toScreen(a0, b0 + nb * db);
+  const [right, bottom] = vp.toScreen(a0 + na * da, b0);
+  ctx.imageSmoothingEnabled = false;
+  ctx.setTransform(vp.scale * da, 0, 0, vp.scale * db, left, top);
+  ctx.drawImage(image, 0, 0);
+  ctx.setTransform(1, 0, 0, 1, 0, 0);
+  drawCellGrid(ctx, vp, a0, b0, da, db, na, nb);
+  return { left, top, right, bottom };
+}
+
+/** The outline of the rectangle drawCellImage returned, on the pixel grid. */
+export function outlineCellRect(ctx, rect, dpr) {
+  const { left, top, right, bottom } = rect;
+  ctx.strokeStyle = 'rgba(80, 90, 105, 0.7)';
+  ctx.lineWidth = dpr;
+  ctx.strokeRect(Math.round(left) - 0.5 * dpr, Math.round(top) - 0.5 * dpr, Math.round(right - left) + dpr, Math.round(bottom - top) + dpr);
 }
 
 /** Outlines cells (at least `minPx` device pixels wide so single cells stay visible). */

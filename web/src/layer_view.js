@@ -5,8 +5,8 @@
 import { Viewport2D } from './viewport2d.js';
 import { layerCanvas } from './layer_image.js';
 import { cellText } from './format.js';
-import { CANVAS_BACKGROUND, CONTOUR, DIFFERING, HATCH } from './palette.js';
-import { drawCellGrid, drawMessage, outlineCells } from './canvas_draw.js';
+import { CONTOUR, DIFFERING, HATCH } from './palette.js';
+import { clearCanvas, drawCellImage, drawMessage, outlineCellRect, outlineCells } from './canvas_draw.js';
 
 export class LayerView {
   constructor({ canvas, data, state, showHatches, fitButton, setCellInfo, onImage }) {
@@ -76,9 +76,7 @@ export class LayerView {
     const vp = this.viewport;
     const g = this.data.grid;
     const dpr = vp.dpr;
-    ctx.setTransform(1, 0, 0, 1, 0, 0);
-    ctx.fillStyle = CANVAS_BACKGROUND;
-    ctx.fillRect(0, 0, this.canvas.width, this.canvas.height);
+    clearCanvas(ctx, this.canvas);
     if (this.error) {
       drawMessage(ctx, this.canvas, dpr, this.error);
       return;
@@ -87,25 +85,12 @@ export class LayerView {
       drawMessage(ctx, this.canvas, dpr, 'decoding layer…');
       return;
     }
-    const s = vp.scale;
-    const [left, top] = vp.toScreen(g.x0, g.y0 + g.ny * g.dy);
-    ctx.imageSmoothingEnabled = false;
-    ctx.setTransform(s * g.dx, 0, 0, s * g.dy, left, top);
-    ctx.drawImage(this.image.canvas, 0, 0);
-    ctx.setTransform(1, 0, 0, 1, 0, 0);
-
-    drawCellGrid(ctx, vp, g.x0, g.y0, g.dx, g.dy, g.nx, g.ny);
+    this.cellRect = drawCellImage(ctx, vp, this.image.canvas, g.x0, g.y0, g.dx, g.dy, g.nx, g.ny);
     const n = this.image.index;
     if (this.showHatches.checked) this.#drawHatches(ctx, this.data.hatches(n));
     this.#drawContours(ctx, this.data.contours(n));
     this.#drawDiffering(ctx, this.image.layer.k);
-
-    // the grid's outline
-    const [right, bottom] = vp.toScreen(g.x0 + g.nx * g.dx, g.y0);
-    this.cellRect = { left, top, right, bottom };
-    ctx.strokeStyle = 'rgba(80, 90, 105, 0.7)';
-    ctx.lineWidth = dpr;
-    ctx.strokeRect(Math.round(left) - 0.5 * dpr, Math.round(top) - 0.5 * dpr, Math.round(right - left) + dpr, Math.round(bottom - top) + dpr);
+    outlineCellRect(ctx, this.cellRect, dpr);
     this.drawnK = this.image.layer.k;
     if (!this.firstDrawn) {
       this.firstDrawn = true;

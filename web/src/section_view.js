@@ -4,8 +4,8 @@
 
 import { Viewport2D } from './viewport2d.js';
 import { cellText, mm } from './format.js';
-import { CANVAS_BACKGROUND, CELL_RGB, DIFFERING, SELECTED_LAYER } from './palette.js';
-import { drawCellGrid, drawMessage, outlineCells } from './canvas_draw.js';
+import { CELL_RGB, DIFFERING, SELECTED_LAYER } from './palette.js';
+import { clearCanvas, drawCellImage, drawMessage, outlineCellRect, outlineCells } from './canvas_draw.js';
 
 export class SectionView {
   constructor({ canvas, axisSelect, slider, sliderLabel, progress, fitButton, data, state, setCellInfo }) {
@@ -155,23 +155,15 @@ export class SectionView {
     const vp = this.viewport;
     const g = this.data.grid;
     const dpr = vp.dpr;
-    ctx.setTransform(1, 0, 0, 1, 0, 0);
-    ctx.fillStyle = CANVAS_BACKGROUND;
-    ctx.fillRect(0, 0, this.canvas.width, this.canvas.height);
+    clearCanvas(ctx, this.canvas);
     const s = this.section;
     if (!s || s.axis !== this.axis) {
       drawMessage(ctx, this.canvas, dpr, this.started ? 'assembling the section…' : 'the section is built when shown');
       return;
     }
     const [a0, da, na] = this.#acrossGeometry();
-    const [left, top] = vp.toScreen(a0, g.z0 + g.nz * g.dz);
-    const [right, bottom] = vp.toScreen(a0 + na * da, g.z0);
-    this.cellRect = { left, top, right, bottom };
-    ctx.imageSmoothingEnabled = false;
-    ctx.setTransform(vp.scale * da, 0, 0, vp.scale * g.dz, left, top);
-    ctx.drawImage(s.image, 0, 0);
-    ctx.setTransform(1, 0, 0, 1, 0, 0);
-    drawCellGrid(ctx, vp, a0, g.z0, da, g.dz, na, g.nz);
+    this.cellRect = drawCellImage(ctx, vp, s.image, a0, g.z0, da, g.dz, na, g.nz);
+    const { left, right } = this.cellRect;
 
     // cells on which the fast and exact paths differ, in this section
     const differing = (this.data.validation?.cells ?? [])
@@ -179,9 +171,7 @@ export class SectionView {
       .map((c) => [s.axis === 'xz' ? c[0] : c[1], c[2]]);
     if (differing.length) outlineCells(ctx, vp, differing, a0, g.z0, da, g.dz, DIFFERING);
 
-    ctx.strokeStyle = 'rgba(80, 90, 105, 0.7)';
-    ctx.lineWidth = dpr;
-    ctx.strokeRect(Math.round(left) - 0.5 * dpr, Math.round(top) - 0.5 * dpr, Math.round(right - left) + dpr, Math.round(bottom - top) + dpr);
+    outlineCellRect(ctx, this.cellRect, dpr);
 
     // the selected layer
     const k = this.state.k;

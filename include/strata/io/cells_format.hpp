@@ -1,9 +1,12 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
+#include <string>
 #include <string_view>
 
 #include "strata/slice/grid_spec.hpp"
+#include "strata/voxel/cell_class.hpp"
 
 namespace strata::io {
 
@@ -36,5 +39,10 @@ inline std::uint64_t packed_layer_bytes(const GridSpec& grid) {
 inline std::uint64_t binary_cells_file_bytes(const GridSpec& grid) {
   return kCellsHeaderBytes + std::uint64_t{grid.nz} * packed_layer_bytes(grid);
 }
+
+/// Appends `cells` to `out` packed as the binary encoding stores a layer: 4 cells a byte, the
+/// first in the two most significant bits, the last byte padded with zero bits. The codes are
+/// packed as they are: checking them (no reserved 10) is the caller's.
+void append_packed_cells(std::span<const CellClass> cells, std::string& out);
 
 }  // namespace strata::io

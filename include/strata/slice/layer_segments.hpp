@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "strata/mesh/indexed_mesh.hpp"
@@ -16,6 +17,33 @@ struct CrossedEdge {
 
   friend bool operator==(const CrossedEdge&, const CrossedEdge&) = default;
 };
+
+/// The two edges by which a facet crosses a cutting plane, in the facet's vertex order: the edge
+/// going down through the plane starts its piece in the plane, the edge going up ends it, so that
+/// the material lies on the piece's left.
+struct FacetCrossing {
+  CrossedEdge start_edge;
+  CrossedEdge end_edge;
+};
+
+/// How facet `f` of `mesh` crosses the plane at height z; std::nullopt when its three vertices
+/// lie on one side (a vertex with z == plane counts as above, SPEC §2). The fast and the exact
+/// cut both start from it and differ only in how they compute the points on the two edges.
+inline std::optional<FacetCrossing> facet_crossing(const IndexedMesh& mesh, FacetIndex f,
+                                                   double z) {
+  const auto& t = mesh.triangles[f];
+  const bool above[3] = {mesh.vertices[t[0]].z >= z, mesh.vertices[t[1]].z >= z,
+                         mesh.vertices[t[2]].z >= z};
+  const int count = int{above[0]} + int{above[1]} + int{above[2]};
+  if (count == 0 || count == 3) return std::nullopt;
+  FacetCrossing crossing;
+  for (int u = 0; u < 3; ++u) {
+    const int v = (u + 1) % 3;
+    if (above[u] && !above[v]) crossing.start_edge = CrossedEdge{t[v], t[u]};
+    if (!above[u] && above[v]) crossing.end_edge = CrossedEdge{t[u], t[v]};
+  }
+  return crossing;
+}
 
 /// The piece of one facet in one cutting plane. It runs so that the material lies on its left
 /// (outer loops counter-clockwise seen from +z, when the facet is oriented outward): it starts

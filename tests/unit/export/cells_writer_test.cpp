@@ -242,15 +242,8 @@ TEST(CellsWriter, FinishBeforeAllLayersFailsAndWritesNothing) {
 
 TEST(CellsWriter, NoFileUnderTheFinalNameBeforeFinish) {
   ScratchDir dir;
-  auto sink = make_cells_writer(dir / "part.cells");
-  auto layers = small_layers();
-  ASSERT_TRUE(sink->begin(small_run()));
-  ASSERT_TRUE(sink->add_layer(layers[0].result()));
-  ASSERT_TRUE(sink->add_layer(layers[1].result()));
-  EXPECT_FALSE(std::filesystem::exists(dir / "part.cells"));
-  ASSERT_TRUE(sink->finish());
-  EXPECT_TRUE(std::filesystem::exists(dir / "part.cells"));
-  EXPECT_EQ(list_tree(dir.path()), std::vector<std::string>{"part.cells"});
+  testing::expect_file_only_after_finish(*make_cells_writer(dir / "part.cells"), small_layers(),
+                                         dir, "part.cells");
 }
 
 TEST(CellsWriter, AbortRemovesTheTemporaryAndTheFoldersItCreated) {
@@ -284,13 +277,8 @@ TEST(CellsWriter, AbortKeepsFoldersThatExistedBefore) {
 
 TEST(CellsWriter, DestroyingAnUnfinishedSinkLeavesNothing) {
   ScratchDir dir;
-  {
-    auto sink = make_cells_writer(dir / "new" / "part.cells");
-    auto layers = small_layers();
-    ASSERT_TRUE(sink->begin(small_run()));
-    ASSERT_TRUE(sink->add_layer(layers[0].result()));
-  }
-  EXPECT_TRUE(list_tree(dir.path()).empty());
+  testing::expect_destroyed_unfinished_sink_leaves_nothing(
+      make_cells_writer(dir / "new" / "part.cells"), dir);
 }
 
 TEST(CellsWriter, UnwritableTargetIsBadInput) {

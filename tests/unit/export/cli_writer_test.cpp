@@ -310,14 +310,8 @@ TEST(CliWriter, AbortRemovesTheFileAndTheFoldersItCreated) {
 
 TEST(CliWriter, NoFileUnderTheFinalNameBeforeFinish) {
   ScratchDir dir;
-  auto sink = make_cli_writer(dir / "part.cli");
-  auto layers = layers_with_contours();
-  ASSERT_TRUE(sink->begin(small_run()));
-  ASSERT_TRUE(sink->add_layer(layers[0].result()));
-  ASSERT_TRUE(sink->add_layer(layers[1].result()));
-  EXPECT_FALSE(std::filesystem::exists(dir / "part.cli"));
-  ASSERT_TRUE(sink->finish());
-  EXPECT_EQ(list_tree(dir.path()), std::vector<std::string>{"part.cli"});
+  testing::expect_file_only_after_finish(*make_cli_writer(dir / "part.cli"), layers_with_contours(),
+                                         dir, "part.cli");
 }
 
 TEST(CliWriter, BinaryLayersLongerThanTheWriteBufferAreWhole) {

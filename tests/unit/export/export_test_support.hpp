@@ -10,6 +10,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <iterator>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -120,6 +121,30 @@ inline std::vector<std::string> lines_of(const std::string& text) {
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   return lines;
+}
+
+/// The sink contract every file writer keeps: a sink destroyed after begin and one layer, never
+/// finished, leaves nothing in `dir` (no file, no folder it created).
+inline void expect_destroyed_unfinished_sink_leaves_nothing(std::unique_ptr<LayerSink> sink,
+                                                            const ScratchDir& dir) {
+  const std::vector<LayerData> layers = small_layers();
+  ASSERT_TRUE(sink->begin(small_run()));
+  ASSERT_TRUE(sink->add_layer(layers[0].result()));
+  sink.reset();
+  EXPECT_TRUE(list_tree(dir.path()).empty());
+}
+
+/// The sink contract of a single-file writer: over both `layers` of small_run(), nothing is
+/// under the final name `file` (in `dir`) until finish, and then that file only.
+inline void expect_file_only_after_finish(LayerSink& sink, const std::vector<LayerData>& layers,
+                                          const ScratchDir& dir, const std::string& file) {
+  ASSERT_TRUE(sink.begin(small_run()));
+  ASSERT_TRUE(sink.add_layer(layers[0].result()));
+  ASSERT_TRUE(sink.add_layer(layers[1].result()));
+  EXPECT_FALSE(std::filesystem::exists(dir / file));
+  ASSERT_TRUE(sink.finish());
+  EXPECT_TRUE(std::filesystem::exists(dir / file));
+  EXPECT_EQ(list_tree(dir.path()), std::vector<std::string>{file});
 }
 
 }  // namespace strata::io::testing

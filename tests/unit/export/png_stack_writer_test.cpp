@@ -191,13 +191,8 @@ TEST(PngStackWriter, AbortLeavesForeignFilesAndTheirFolder) {
 
 TEST(PngStackWriter, DestroyingAnUnfinishedSinkLeavesNothing) {
   ScratchDir dir;
-  {
-    auto sink = make_png_stack_writer(dir.path(), "part");
-    auto layers = small_layers();
-    ASSERT_TRUE(sink->begin(small_run()));
-    ASSERT_TRUE(sink->add_layer(layers[0].result()));
-  }
-  EXPECT_TRUE(list_tree(dir.path()).empty());
+  testing::expect_destroyed_unfinished_sink_leaves_nothing(
+      make_png_stack_writer(dir.path(), "part"), dir);
 }
 
 TEST(PngStackWriter, FinishRemovesStaleLayersOfALongerEarlierRun) {

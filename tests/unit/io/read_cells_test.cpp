@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -165,21 +166,19 @@ TEST(CellsReader, BothEncodingsSummarizeAlike) {
 }
 
 TEST(CellsReader, LayerVisitorSeesLayersInOrderAndCanStop) {
-  for (const CellsEncoding encoding : {CellsEncoding::Binary, CellsEncoding::Ascii}) {
-    ScratchDir dir;
-    const auto path = write_small(dir, encoding);
-    std::vector<std::uint32_t> seen;
-    auto read = read_cells_layers(
-        path,
-        [&](const CellsHeader&, std::uint32_t k, std::span<const CellClass> cells) -> Result<void> {
-          seen.push_back(k);
-          EXPECT_EQ(cells.size(), 15u);
-          return Error{ErrorCode::Usage, "stop", "visitor"};
-        });
-    ASSERT_FALSE(read);
-    EXPECT_EQ(read.error().message, "stop");
-    EXPECT_EQ(seen, std::vector<std::uint32_t>{0});
-  }
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Binary);
+  std::vector<std::uint32_t> seen;
+  auto read = read_cells_layers(
+      path,
+      [&](const CellsHeader&, std::uint32_t k, std::span<const CellClass> cells) -> Result<void> {
+        seen.push_back(k);
+        EXPECT_EQ(cells.size(), 15u);
+        return Error{ErrorCode::Usage, "stop", "visitor"};
+      });
+  ASSERT_FALSE(read);
+  EXPECT_EQ(read.error().message, "stop");
+  EXPECT_EQ(seen, std::vector<std::uint32_t>{0});
 }
 
 // ---------------------------------------------------------------------------- binary errors
@@ -190,60 +189,68 @@ TEST(CellsReader, MissingFileIsBadInput) {
   EXPECT_EQ(e.location, (dir / "nope.cells").string());
 }
 
-TEST(CellsReader, BadMagicIsRejected) {
+/// The binary file of small_run() edited, and how the reader must refuse it: a message containing
+/// `part` and, unless `place` is null, the location `path + place`.
+struct BinaryEditCase {
+  const char* name;
+  std::string (*edit)(std::string file);
+  const char* place;
+  const char* part;
+};
+
+void PrintTo(const BinaryEditCase& c, std::ostream* os) { *os << c.name; }
+
+class CellsReaderBinaryEdit : public ::testing::TestWithParam<BinaryEditCase> {};
+
+TEST_P(CellsReaderBinaryEdit, IsRejected) {
+  const BinaryEditCase& c = GetParam();
   ScratchDir dir;
   const auto path = write_small(dir, CellsEncoding::Binary);
-  std::string file = read_file_bytes(path);
-  file[7] = '2';  // STRCELL2
-  write_file_bytes(path, file);
+  write_file_bytes(path, c.edit(read_file_bytes(path)));
   const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string());
-  EXPECT_TRUE(contains(e.message, "STRCELL1")) << e.message;
+  if (c.place != nullptr) {
+    EXPECT_EQ(e.location, path.string() + c.place);
+  }
+  EXPECT_TRUE(contains(e.message, c.part)) << e.message;
 }
 
-TEST(CellsReader, TruncatedHeaderIsRejected) {
-  ScratchDir dir;
-  const auto path = write_small(dir, CellsEncoding::Binary);
-  write_file_bytes(path, read_file_bytes(path).substr(0, 40));
-  const Error e = read_error(path);
-  EXPECT_TRUE(contains(e.message, "ends after 40 bytes")) << e.message;
-}
-
-TEST(CellsReader, WrongHeaderSizeFieldIsRejected) {
-  ScratchDir dir;
-  const auto path = write_small(dir, CellsEncoding::Binary);
-  std::string file = read_file_bytes(path);
-  file[8] = 96;
-  write_file_bytes(path, file);
-  const Error e = read_error(path);
-  EXPECT_TRUE(contains(e.message, "header size field is 96")) << e.message;
-}
-
-TEST(CellsReader, TruncatedLayersAreRejectedWithTheExpectedLength) {
-  ScratchDir dir;
-  const auto path = write_small(dir, CellsEncoding::Binary);
-  write_file_bytes(path, read_file_bytes(path).substr(0, 86));
-  const Error e = read_error(path);
-  EXPECT_TRUE(contains(e.message, "86 bytes, shorter than the 88 bytes")) << e.message;
-}
-
-TEST(CellsReader, TrailingBytesAreRejected) {
-  ScratchDir dir;
-  const auto path = write_small(dir, CellsEncoding::Binary);
-  write_file_bytes(path, read_file_bytes(path) + std::string(1, '\0'));
-  const Error e = read_error(path);
-  EXPECT_TRUE(contains(e.message, "89 bytes, longer than the 88 bytes")) << e.message;
-}
-
-TEST(CellsReader, ZeroSizedGridIsRejected) {
-  ScratchDir dir;
-  const auto path = write_small(dir, CellsEncoding::Binary);
-  std::string file = read_file_bytes(path);
-  file[12] = 0;  // nx = 0
-  write_file_bytes(path, file.substr(0, 80));
-  const Error e = read_error(path);
-  EXPECT_TRUE(contains(e.message, "0 x 3 x 2")) << e.message;
-}
+INSTANTIATE_TEST_SUITE_P(
+    CellsReader, CellsReaderBinaryEdit,
+    ::testing::Values(BinaryEditCase{"BadMagic",
+                                     +[](std::string file) {
+                                       file[7] = '2';  // STRCELL2
+                                       return file;
+                                     },
+                                     "", "STRCELL1"},
+                      BinaryEditCase{"TruncatedHeader",
+                                     +[](std::string file) { return file.substr(0, 40); }, nullptr,
+                                     "ends after 40 bytes"},
+                      BinaryEditCase{"WrongHeaderSizeField",
+                                     +[](std::string file) {
+                                       file[8] = 96;
+                                       return file;
+                                     },
+                                     nullptr, "header size field is 96"},
+                      BinaryEditCase{"TruncatedLayersWithTheExpectedLength",
+                                     +[](std::string file) { return file.substr(0, 86); }, nullptr,
+                                     "86 bytes, shorter than the 88 bytes"},
+                      BinaryEditCase{"TrailingBytes",
+                                     +[](std::string file) { return file + std::string(1, '\0'); },
+                                     nullptr, "89 bytes, longer than the 88 bytes"},
+                      BinaryEditCase{"ZeroSizedGrid",
+                                     +[](std::string file) {
+                                       file[12] = 0;  // nx = 0
+                                       return file.substr(0, 80);
+                                     },
+                                     nullptr, "0 x 3 x 2"},
+                      BinaryEditCase{"NonZeroPaddingBits",
+                                     +[](std::string file) {
+                                       // layer 0's last byte 0x70 with a padding bit set
+                                       file[83] = static_cast<char>(0x71);
+                                       return file;
+                                     },
+                                     ": layer 0", "padding"}),
+    [](const ::testing::TestParamInfo<BinaryEditCase>& info) { return info.param.name; });
 
 TEST(CellsReader, ReservedCodeNamesLayerRowAndCell) {
   ScratchDir dir;
@@ -256,17 +263,6 @@ TEST(CellsReader, ReservedCodeNamesLayerRowAndCell) {
   const Error e = read_error(path);
   EXPECT_EQ(e.location, path.string() + ": layer 1, row 1, cell 1");
   EXPECT_TRUE(contains(e.message, "reserved cell code 10")) << e.message;
-}
-
-TEST(CellsReader, NonZeroPaddingBitsAreRejected) {
-  ScratchDir dir;
-  const auto path = write_small(dir, CellsEncoding::Binary);
-  std::string file = read_file_bytes(path);
-  file[83] = static_cast<char>(0x71);  // layer 0's last byte 0x70 with a padding bit set
-  write_file_bytes(path, file);
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ": layer 0");
-  EXPECT_TRUE(contains(e.message, "padding")) << e.message;
 }
 
 TEST(CellsReader, SummaryStopsAtTheSameErrors) {
@@ -299,161 +295,72 @@ std::filesystem::path ascii_with_line(const ScratchDir& dir, std::size_t number,
   return path;
 }
 
-TEST(CellsReader, AsciiTabsTrailingBlanksAndBlankLinesBetweenLayersAreAccepted) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 10, " \t\n\nlayer\t1  z=1.625 \t");
-  auto read = read_cells(path);
-  ASSERT_TRUE(read) << read.error().to_string();
-  expect_small_header(read->header);
-  EXPECT_EQ(read->cells, all_small_cells());
-}
+/// One line of the ASCII file of small_run() replaced, and how the reader must refuse it: at
+/// `error_line`, with the whole `message`, or a message containing `part`, or (both null) with
+/// only the place checked.
+struct AsciiLineCase {
+  const char* name;
+  std::size_t line;
+  const char* replacement;
+  std::size_t error_line;
+  const char* message = nullptr;
+  const char* part = nullptr;
+};
 
-TEST(CellsReader, AsciiShortRowNamesTheLine) {
+void PrintTo(const AsciiLineCase& c, std::ostream* os) { *os << c.name; }
+
+class CellsReaderAsciiLine : public ::testing::TestWithParam<AsciiLineCase> {};
+
+TEST_P(CellsReaderAsciiLine, IsRefusedNamingTheLine) {
+  const AsciiLineCase& c = GetParam();
   ScratchDir dir;
-  const auto path = ascii_with_line(dir, 8, "11000100");
+  const auto path = ascii_with_line(dir, c.line, c.replacement);
   const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":8");
-  EXPECT_TRUE(contains(e.message, "row 1 of layer 0 has 8 characters; expected 10")) << e.message;
-}
-
-TEST(CellsReader, AsciiReservedCodeNamesTheLineAndCell) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 12, "1101100111");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":12");
-  EXPECT_TRUE(contains(e.message, "reserved cell code 10 at layer 1, row 1, cell 2")) << e.message;
-}
-
-TEST(CellsReader, AsciiForeignCharacterNamesTheLine) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 7, "00011x1101");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":7");
-  EXPECT_TRUE(contains(e.message, "cell 2")) << e.message;
-}
-
-TEST(CellsReader, AsciiWrongLayerIndexNamesTheLine) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 10, "layer 2 z=1.625");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":10");
-  EXPECT_TRUE(contains(e.message, "layer 2 found where layer 1 was expected")) << e.message;
-}
-
-TEST(CellsReader, AsciiMalformedLayerLineNamesTheLine) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 10, "layer 1 at 1.625");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":10");
-}
-
-TEST(CellsReader, AsciiLineErrorsNameTheirLineAndSayWhatWasExpected) {
-  struct Case {
-    std::size_t line;
-    const char* replacement;
-    const char* message;
-  };
-  const Case cases[] = {
-      {3, "grid 5 3 2", "'grid' appears twice in the header"},
-      {4, "origin 0 0 0", "'origin' appears twice in the header"},
-      {6, "shell 1", "'shell' appears twice in the header"},
-      {10, "layers 1 z=1.625", "expected 'layer 1 z=<number>'"},
-      {10, "layer 1 q=1.625", "expected 'layer 1 z=<number>'"},
-      {7, "0001111x01",
-       "'1x' at layer 0, row 0, cell 3 (column 7) is not a cell code; expected 00, 01 or 11"},
-      {7, "000111110x",
-       "'0x' at layer 0, row 0, cell 4 (column 9) is not a cell code; expected 00, 01 or 11"},
-      {7, "x001111101",
-       "'x0' at layer 0, row 0, cell 0 (column 1) is not a cell code; expected 00, 01 or 11"},
-  };
-  for (const Case& c : cases) {
-    ScratchDir dir;
-    const auto path = ascii_with_line(dir, c.line, c.replacement);
-    const Error e = read_error(path);
-    EXPECT_EQ(e.location, path.string() + ":" + std::to_string(c.line)) << c.replacement;
+  EXPECT_EQ(e.location, path.string() + ":" + std::to_string(c.error_line));
+  if (c.message != nullptr) {
     EXPECT_EQ(e.message, c.message);
   }
-}
-
-TEST(CellsReader, AsciiBadNumbersOfEveryHeaderKeyAndTheLayerIndexNameTheirLine) {
-  struct Case {
-    std::size_t line;
-    const char* replacement;
-    const char* token;
-  };
-  const Case cases[] = {{2, "grid 5 x 2", "x"},
-                        {4, "spacing 0.5 x 1", "x"},
-                        {5, "shell t", "t"},
-                        {10, "layer one z=1.625", "one"}};
-  for (const Case& c : cases) {
-    ScratchDir dir;
-    const auto path = ascii_with_line(dir, c.line, c.replacement);
-    const Error e = read_error(path);
-    EXPECT_EQ(e.location, path.string() + ":" + std::to_string(c.line)) << c.replacement;
-    EXPECT_EQ(e.message.rfind(std::string("bad number '") + c.token + "'", 0), 0u) << e.message;
+  if (c.part != nullptr) {
+    EXPECT_TRUE(contains(e.message, c.part)) << e.message;
   }
 }
 
-TEST(CellsReader, AsciiMissingHeaderKeysAreNamedInOrder) {
-  struct Case {
-    std::size_t line;
-    const char* key;
-  };
-  for (const Case& c : {Case{2, "grid"}, Case{3, "origin"}, Case{4, "spacing"}}) {
-    ScratchDir dir;
-    const auto path = ascii_with_line(dir, c.line, "");
-    const Error e = read_error(path);
-    EXPECT_EQ(e.location, path.string() + ":6");
-    EXPECT_EQ(e.message,
-              std::string("the header has no '") + c.key + "' line before the first layer");
-  }
-}
-
-TEST(CellsReader, AsciiHeaderEndingWithoutAKeyIsNamedAfterTheLastLine) {
-  ScratchDir dir;
-  const auto path = write_small(dir, CellsEncoding::Ascii);
-  const auto lines = testing::lines_of(read_file_bytes(path));
-  write_file_bytes(path, lines[0] + "\n" + lines[1] + "\n" + lines[2] + "\n" + lines[3] + "\n");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":5");
-  EXPECT_EQ(e.message, "the header has no 'shell' line before the first layer");
-}
-
-TEST(CellsReader, AsciiBadHeaderValueNamesTheLine) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 3, "origin -1.5 abc 0.125");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":3");
-}
-
-// The numbers of an ASCII cells file follow the grammar of every text format (README "Numbers in
-// text formats") and are refused with the same message.
-TEST(CellsReader, AsciiHeaderNumberTooLargeIsABadNumberNamingTheLine) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 3, "origin -1.5 1e999 0.125");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":3");
-  EXPECT_EQ(e.message,
-            "bad number '1e999': too large for a double (|x| <= 1.7976931348623157e308)");
-}
-
-TEST(CellsReader, AsciiGridSizeWithAFractionIsABadNumber) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 2, "grid 5 3.0 2");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":2");
-  EXPECT_EQ(e.message,
-            "bad number '3.0': not an integer (no decimal point or exponent where an integer is "
-            "expected)");
-}
-
-TEST(CellsReader, AsciiLayerHeightNanIsABadNumber) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 10, "layer 1 z=nan");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":10");
-  EXPECT_EQ(e.message, "bad number 'nan': not a number (inf and nan are not accepted)");
-}
+INSTANTIATE_TEST_SUITE_P(
+    CellsReader, CellsReaderAsciiLine,
+    ::testing::Values(
+        AsciiLineCase{"ShortRow", 8, "11000100", 8, nullptr,
+                      "row 1 of layer 0 has 8 characters; expected 10"},
+        AsciiLineCase{"ReservedCodeNamesTheCell", 12, "1101100111", 12, nullptr,
+                      "reserved cell code 10 at layer 1, row 1, cell 2"},
+        AsciiLineCase{"ForeignCharacter", 7, "00011x1101", 7, nullptr, "cell 2"},
+        AsciiLineCase{"WrongLayerIndex", 10, "layer 2 z=1.625", 10, nullptr,
+                      "layer 2 found where layer 1 was expected"},
+        AsciiLineCase{"MalformedLayerLine", 10, "layer 1 at 1.625", 10},
+        AsciiLineCase{"BadHeaderValue", 3, "origin -1.5 abc 0.125", 3},
+        // The numbers of an ASCII cells file follow the grammar of every text format (README
+        // "Numbers in text formats") and are refused with the same message.
+        AsciiLineCase{"HeaderNumberTooLarge", 3, "origin -1.5 1e999 0.125", 3,
+                      "bad number '1e999': too large for a double (|x| <= 1.7976931348623157e308)"},
+        AsciiLineCase{"GridSizeWithAFraction", 2, "grid 5 3.0 2", 2,
+                      "bad number '3.0': not an integer (no decimal point or exponent where an "
+                      "integer is expected)"},
+        AsciiLineCase{"LayerHeightNan", 10, "layer 1 z=nan", 10,
+                      "bad number 'nan': not a number (inf and nan are not accepted)"},
+        AsciiLineCase{"UnknownHeaderKey", 5, "thickness 0.75", 5, nullptr,
+                      "unknown header key 'thickness'"},
+        AsciiLineCase{"UnsupportedVersionNamesBothVersionLines", 1, "strata-cells 2", 1,
+                      "unsupported version line 'strata-cells 2'; expected 'strata-cells 1'"},
+        // It starts like an ASCII cells file, so the ASCII reader says what the first line
+        // must be.
+        AsciiLineCase{"AnotherFirstLine", 1, "strata-cells-1", 1,
+                      "expected the first line 'strata-cells 1'"},
+        AsciiLineCase{"HeaderKeyGivenTwice", 5, "grid 5 3 2", 5,
+                      "'grid' appears twice in the header"},
+        AsciiLineCase{"HeaderLineWithTooFewValuesShowsItsShape", 4, "spacing 0.5 0.25", 4,
+                      "expected 'spacing dx dy dz'"},
+        AsciiLineCase{"MissingHeaderKeyNamedAtTheFirstLayer", 5, "", 6,
+                      "the header has no 'shell' line before the first layer"}),
+    [](const ::testing::TestParamInfo<AsciiLineCase>& info) { return info.param.name; });
 
 TEST(CellsReader, AsciiSignedNumbersAreRead) {
   ScratchDir dir;
@@ -461,21 +368,6 @@ TEST(CellsReader, AsciiSignedNumbersAreRead) {
   auto read = read_cells(path);
   ASSERT_TRUE(read) << read.error().to_string();
   EXPECT_EQ(read->cells, all_small_cells());
-}
-
-TEST(CellsReader, AsciiUnknownHeaderKeyNamesTheLine) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 5, "thickness 0.75");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":5");
-  EXPECT_TRUE(contains(e.message, "unknown header key 'thickness'")) << e.message;
-}
-
-TEST(CellsReader, AsciiUnsupportedVersionIsRejected) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 1, "strata-cells 2");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":1");
 }
 
 TEST(CellsReader, AsciiTruncatedFileSaysWhatIsMissing) {
@@ -496,46 +388,6 @@ TEST(CellsReader, AsciiExtraContentAfterTheLastLayerIsRejected) {
   write_file_bytes(path, read_file_bytes(path) + "\n0000000000\n");
   const Error e = read_error(path);
   EXPECT_EQ(e.location, path.string() + ":15");
-}
-
-TEST(CellsReader, AsciiFileWithAnotherFirstLineIsRejected) {
-  // It starts like an ASCII cells file, so the ASCII reader says what the first line must be.
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 1, "strata-cells-1");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":1");
-  EXPECT_EQ(e.message, "expected the first line 'strata-cells 1'");
-}
-
-TEST(CellsReader, AsciiUnsupportedVersionNamesBothVersionLines) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 1, "strata-cells 2");
-  EXPECT_EQ(read_error(path).message,
-            "unsupported version line 'strata-cells 2'; expected 'strata-cells 1'");
-}
-
-TEST(CellsReader, AsciiHeaderKeyGivenTwiceIsRejected) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 5, "grid 5 3 2");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":5");
-  EXPECT_EQ(e.message, "'grid' appears twice in the header");
-}
-
-TEST(CellsReader, AsciiHeaderLineWithTooFewValuesShowsItsShape) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 4, "spacing 0.5 0.25");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":4");
-  EXPECT_EQ(e.message, "expected 'spacing dx dy dz'");
-}
-
-TEST(CellsReader, AsciiMissingHeaderKeyIsNamedAtTheFirstLayer) {
-  ScratchDir dir;
-  const auto path = ascii_with_line(dir, 5, "");
-  const Error e = read_error(path);
-  EXPECT_EQ(e.location, path.string() + ":6");
-  EXPECT_EQ(e.message, "the header has no 'shell' line before the first layer");
 }
 
 /// The first `count` lines of the ASCII file of small_run().
@@ -575,10 +427,6 @@ TEST(CellsReader, AsciiHeaderValuesAreCheckedAsInBinaryFiles) {
       {4, "spacing 0.5 -0.25 1", "spacing 0.5 -0.25 1 must be positive and finite"},
       {4, "spacing 0.5 0.25 0", "spacing 0.5 0.25 0 must be positive and finite"},
       {5, "shell -0.75", "shell thickness -0.75 must be finite and not negative"},
-      {2, "grid 0 3 2", "grid 0 x 3 x 2 has no cells; every size must be at least 1"},
-      {2, "grid 5 3 0", "grid 5 x 3 x 0 has no cells; every size must be at least 1"},
-      {4, "spacing 0 0.25 1", "spacing 0 0.25 1 must be positive and finite"},
-      {4, "spacing 0.5 0.25 -1", "spacing 0.5 0.25 -1 must be positive and finite"},
   };
   for (const Case& c : cases) {
     ScratchDir dir;
@@ -599,37 +447,6 @@ TEST(CellsReader, BinaryNonFiniteOriginIsRejected) {
   const Error e = read_error(path);
   EXPECT_EQ(e.location, path.string());
   EXPECT_EQ(e.message, "origin -1.5 inf 0.125 is not finite");
-}
-
-TEST(CellsReader, BinaryNonFiniteHeaderValuesAreRejected) {
-  // Values no ASCII file can hold (the number scanner refuses inf and nan), each at its offset.
-  struct Case {
-    int offset;
-    double value;
-    const char* message;
-  };
-  const double inf = std::numeric_limits<double>::infinity();
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  const Case cases[] = {
-      {24, -inf, "origin -inf 2.25 0.125 is not finite"},
-      {40, nan, "origin -1.5 2.25 nan is not finite"},
-      {48, inf, "spacing inf 0.25 1 must be positive and finite"},
-      {56, nan, "spacing 0.5 nan 1 must be positive and finite"},
-      {64, inf, "spacing 0.5 0.25 inf must be positive and finite"},
-      {72, nan, "shell thickness nan must be finite and not negative"},
-  };
-  for (const Case& c : cases) {
-    ScratchDir dir;
-    const auto path = write_small(dir, CellsEncoding::Binary);
-    std::string file = read_file_bytes(path);
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &c.value, sizeof bits);
-    for (int b = 0; b < 8; ++b) file[c.offset + b] = static_cast<char>((bits >> (8 * b)) & 0xFF);
-    write_file_bytes(path, file);
-    const Error e = read_error(path);
-    EXPECT_EQ(e.location, path.string());
-    EXPECT_EQ(e.message, c.message);
-  }
 }
 
 TEST(CellsReader, BinaryGridTooLargeToAddressIsRejectedBeforeItsLength) {
@@ -734,6 +551,118 @@ TEST(CellsReaderVectors, OverlappingBoxesNonZero) {
 TEST(CellsReaderVectors, OverlappingBoxesEvenOdd) {
   expect_vector("overlapping_boxes__cell1_layer1_shell1_layers_evenodd.cells", {6, 4, 4}, 1, 1, 1,
                 {32, 0, 64});
+}
+
+TEST(CellsReader, AsciiBadNumbersOfEveryHeaderKeyAndTheLayerIndexNameTheirLine) {
+  struct Case {
+    std::size_t line;
+    const char* replacement;
+    const char* token;
+  };
+  const Case cases[] = {{2, "grid 5 x 2", "x"},
+                        {4, "spacing 0.5 x 1", "x"},
+                        {5, "shell t", "t"},
+                        {10, "layer one z=1.625", "one"}};
+  for (const Case& c : cases) {
+    ScratchDir dir;
+    const auto path = ascii_with_line(dir, c.line, c.replacement);
+    const Error e = read_error(path);
+    EXPECT_EQ(e.location, path.string() + ":" + std::to_string(c.line)) << c.replacement;
+    EXPECT_EQ(e.message.rfind(std::string("bad number '") + c.token + "'", 0), 0u) << e.message;
+  }
+}
+
+TEST(CellsReader, AsciiHeaderEndingWithoutAKeyIsNamedAfterTheLastLine) {
+  ScratchDir dir;
+  const auto path = write_small(dir, CellsEncoding::Ascii);
+  const auto lines = testing::lines_of(read_file_bytes(path));
+  write_file_bytes(path, lines[0] + "\n" + lines[1] + "\n" + lines[2] + "\n" + lines[3] + "\n");
+  const Error e = read_error(path);
+  EXPECT_EQ(e.location, path.string() + ":5");
+  EXPECT_EQ(e.message, "the header has no 'shell' line before the first layer");
+}
+
+TEST(CellsReader, AsciiLineErrorsNameTheirLineAndSayWhatWasExpected) {
+  struct Case {
+    std::size_t line;
+    const char* replacement;
+    const char* message;
+  };
+  const Case cases[] = {
+      {3, "grid 5 3 2", "'grid' appears twice in the header"},
+      {4, "origin 0 0 0", "'origin' appears twice in the header"},
+      {6, "shell 1", "'shell' appears twice in the header"},
+      {10, "layers 1 z=1.625", "expected 'layer 1 z=<number>'"},
+      {10, "layer 1 q=1.625", "expected 'layer 1 z=<number>'"},
+      {7, "0001111x01",
+       "'1x' at layer 0, row 0, cell 3 (column 7) is not a cell code; expected 00, 01 or 11"},
+      {7, "000111110x",
+       "'0x' at layer 0, row 0, cell 4 (column 9) is not a cell code; expected 00, 01 or 11"},
+      {7, "x001111101",
+       "'x0' at layer 0, row 0, cell 0 (column 1) is not a cell code; expected 00, 01 or 11"},
+  };
+  for (const Case& c : cases) {
+    ScratchDir dir;
+    const auto path = ascii_with_line(dir, c.line, c.replacement);
+    const Error e = read_error(path);
+    EXPECT_EQ(e.location, path.string() + ":" + std::to_string(c.line)) << c.replacement;
+    EXPECT_EQ(e.message, c.message);
+  }
+}
+
+TEST(CellsReader, AsciiMissingHeaderKeysAreNamedInOrder) {
+  struct Case {
+    std::size_t line;
+    const char* key;
+  };
+  for (const Case& c : {Case{2, "grid"}, Case{3, "origin"}, Case{4, "spacing"}}) {
+    ScratchDir dir;
+    const auto path = ascii_with_line(dir, c.line, "");
+    const Error e = read_error(path);
+    EXPECT_EQ(e.location, path.string() + ":6");
+    EXPECT_EQ(e.message,
+              std::string("the header has no '") + c.key + "' line before the first layer");
+  }
+}
+
+TEST(CellsReader, AsciiTabsTrailingBlanksAndBlankLinesBetweenLayersAreAccepted) {
+  ScratchDir dir;
+  const auto path = ascii_with_line(dir, 10, " \t\n\nlayer\t1  z=1.625 \t");
+  auto read = read_cells(path);
+  ASSERT_TRUE(read) << read.error().to_string();
+  expect_small_header(read->header);
+  EXPECT_EQ(read->cells, all_small_cells());
+}
+
+TEST(CellsReader, BinaryNonFiniteHeaderValuesAreRejected) {
+  // Values no ASCII file can hold (the number scanner refuses inf and nan), each at its offset.
+  struct Case {
+    int offset;
+    double value;
+    const char* message;
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const Case cases[] = {
+      {24, -inf, "origin -inf 2.25 0.125 is not finite"},
+      {40, nan, "origin -1.5 2.25 nan is not finite"},
+      {48, inf, "spacing inf 0.25 1 must be positive and finite"},
+      {56, nan, "spacing 0.5 nan 1 must be positive and finite"},
+      {64, inf, "spacing 0.5 0.25 inf must be positive and finite"},
+      {72, nan, "shell thickness nan must be finite and not negative"},
+  };
+  for (const Case& c : cases) {
+    ScratchDir dir;
+    const auto path = write_small(dir, CellsEncoding::Binary);
+    std::string file = read_file_bytes(path);
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &c.value, sizeof bits);
+    for (int b = 0; b < 8; ++b) file[c.offset + b] = static_cast<char>((bits >> (8 * b)) & 0xFF);
+    write_file_bytes(path, file);
+    const Error e = read_error(path);
+    EXPECT_EQ(e.location, path.string());
+    EXPECT_EQ(e.message, c.message);
+  }
 }
 
 }  // namespace

@@ -11,33 +11,22 @@
 #include <vector>
 
 #include "strata/io/read_mesh.hpp"
+#include "support/mesh_reading.hpp"
 #include "support/temp_dir.hpp"
 
 namespace strata::io {
 namespace {
 
-std::filesystem::path adversarial(std::string_view name) {
-  return std::filesystem::path(STRATA_DATA_DIR) / "adversarial" / name;
-}
-
-std::filesystem::path corpus_file(std::string_view relative) {
-  return std::filesystem::path(STRATA_SHARED_DIR) / "corpus" / relative;
-}
+using test::adversarial;
+using test::contains;
+using test::corpus_file;
+using test::expect_read_with_diagnostic;
+using test::expect_refused;
+using test::find_diagnostic;
 
 std::string file_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-const Diagnostic* find_diagnostic(const TriangleSoup& soup, std::string_view code) {
-  for (const Diagnostic& d : soup.diagnostics) {
-    if (d.code == code) return &d;
-  }
-  return nullptr;
-}
-
-bool contains(std::string_view text, std::string_view part) {
-  return text.find(part) != std::string_view::npos;
 }
 
 using Triangle = std::array<Vec3, 3>;
@@ -61,15 +50,11 @@ TEST(ReadMeshFile, MissingFileIsErrorNamingThePath) {
 }
 
 TEST(ReadMeshFile, DirectoryIsError) {
-  const auto soup = read_mesh(std::filesystem::path(STRATA_DATA_DIR) / "adversarial");
-  ASSERT_FALSE(soup);
-  EXPECT_TRUE(contains(soup.error().message, "directory")) << soup.error().message;
+  expect_refused(std::filesystem::path(STRATA_DATA_DIR) / "adversarial", "directory");
 }
 
 TEST(ReadMeshFile, ZeroByteFileIsError) {
-  const auto soup = read_mesh(adversarial("empty.stl"));
-  ASSERT_FALSE(soup);
-  EXPECT_TRUE(contains(soup.error().message, "empty file (0 bytes)")) << soup.error().message;
+  expect_refused(adversarial("empty.stl"), "empty file (0 bytes)");
 }
 
 TEST(ReadMeshFile, ReadsAFileWrittenInATemporaryFolder) {
@@ -232,19 +217,11 @@ TEST(ReadObj, BackslashContinuesALine) {
 }
 
 TEST(ReadObj, IndexZeroIsErrorNamingTheLine) {
-  const auto path = adversarial("index_zero.obj");
-  const auto soup = read_mesh(path);
-  ASSERT_FALSE(soup);
-  EXPECT_EQ(soup.error().location, path.string() + ":5");
-  EXPECT_TRUE(contains(soup.error().message, "index 0")) << soup.error().message;
+  expect_refused(adversarial("index_zero.obj"), "index 0", ":5");
 }
 
 TEST(ReadObj, IndexOutOfRangeIsErrorNamingTheLine) {
-  const auto path = adversarial("index_out_of_range.obj");
-  const auto soup = read_mesh(path);
-  ASSERT_FALSE(soup);
-  EXPECT_EQ(soup.error().location, path.string() + ":6");
-  EXPECT_TRUE(contains(soup.error().message, "vertex 9")) << soup.error().message;
+  expect_refused(adversarial("index_out_of_range.obj"), "vertex 9", ":6");
 }
 
 TEST(ReadObj, RelativeIndexBeforeItsVertexIsError) {
@@ -277,9 +254,7 @@ TEST(ReadObj, TwoCornerFaceIsSkippedWithWarning) {
 }
 
 TEST(ReadObj, NoFacesIsError) {
-  const auto soup = read_mesh(corpus_file("trimesh/models/empty.obj"));
-  ASSERT_FALSE(soup);
-  EXPECT_TRUE(contains(soup.error().message, "no facets")) << soup.error().message;
+  expect_refused(corpus_file("trimesh/models/empty.obj"), "no facets");
 }
 
 TEST(ReadObj, UnknownStatementIsAWarning) {
@@ -312,30 +287,20 @@ TEST(ReadOff, ReadsPolygonsAsFansInDouble) {
 }
 
 TEST(ReadOff, CountsGluedToTheKeywordAreReadWithWarning) {
-  const auto soup = read_mesh(corpus_file("trimesh/models/whitespace.off"));
-  ASSERT_TRUE(soup) << soup.error().to_string();
-  EXPECT_EQ(soup->triangles.size(), 12u);
-  EXPECT_NE(find_diagnostic(*soup, "off.glued_counts"), nullptr);
+  expect_read_with_diagnostic(corpus_file("trimesh/models/whitespace.off"), 12u,
+                              "off.glued_counts");
 }
 
 TEST(ReadOff, HostileCountsFailBeforeAllocating) {
-  const auto soup = read_mesh(adversarial("hostile_counts.off"));
-  ASSERT_FALSE(soup);
-  EXPECT_TRUE(contains(soup.error().message, "4000000000 vertices")) << soup.error().message;
+  expect_refused(adversarial("hostile_counts.off"), "4000000000 vertices");
 }
 
 TEST(ReadOff, TruncatedFileIsErrorNamingTheLine) {
-  const auto path = adversarial("truncated.off");
-  const auto soup = read_mesh(path);
-  ASSERT_FALSE(soup);
-  EXPECT_EQ(soup.error().location, path.string() + ":9");
-  EXPECT_TRUE(contains(soup.error().message, "truncated")) << soup.error().message;
+  expect_refused(adversarial("truncated.off"), "truncated", ":9");
 }
 
 TEST(ReadOff, CorpusShortFaceRecordIsError) {
-  const auto soup = read_mesh(corpus_file("assimp-testmodels/models/OFF/invalid.off"));
-  ASSERT_FALSE(soup);
-  EXPECT_TRUE(contains(soup.error().message, "face 2")) << soup.error().message;
+  expect_refused(corpus_file("assimp-testmodels/models/OFF/invalid.off"), "face 2");
 }
 
 TEST(ReadOff, IndexOutOfRangeIsErrorNamingTheLine) {
@@ -506,9 +471,7 @@ TEST(ReadPly, HugeElementCountFailsWithoutAllocating) {
 }
 
 TEST(ReadPly, NoFacesIsError) {
-  const auto soup = read_mesh(corpus_file("trimesh/models/empty.ply"));
-  ASSERT_FALSE(soup);
-  EXPECT_TRUE(contains(soup.error().message, "no facets")) << soup.error().message;
+  expect_refused(corpus_file("trimesh/models/empty.ply"), "no facets");
 }
 
 }  // namespace

@@ -19,9 +19,16 @@
 
 #include "io/stl_format_internal.hpp"
 #include "strata/io/read_mesh.hpp"
+#include "support/mesh_reading.hpp"
 
 namespace strata::io {
 namespace {
+
+using test::contains;
+using test::corpus_file;
+using test::expect_read_with_diagnostic;
+using test::expect_refused;
+using test::find_diagnostic;
 
 // ---------------------------------------------------------------------------------------------
 // Helpers: STL files built in memory.
@@ -87,17 +94,6 @@ std::vector<Facet> two_facets() {
   };
 }
 
-const Diagnostic* find_diagnostic(const TriangleSoup& soup, std::string_view code) {
-  for (const Diagnostic& d : soup.diagnostics) {
-    if (d.code == code) return &d;
-  }
-  return nullptr;
-}
-
-bool contains(std::string_view text, std::string_view part) {
-  return text.find(part) != std::string_view::npos;
-}
-
 /// Bitwise equality of two soups' triangles and stored normals (so -0 differs from +0).
 ::testing::AssertionResult bit_identical(const TriangleSoup& a, const TriangleSoup& b) {
   if (a.triangles.size() != b.triangles.size()) {
@@ -150,10 +146,6 @@ std::string triangle_with_vertex_line(int line, std::string_view replacement) {
   const std::size_t end = text.find('\n', start);
   text.replace(start, end - start, replacement);
   return text;
-}
-
-std::filesystem::path corpus_file(std::string_view relative) {
-  return std::filesystem::path(STRATA_SHARED_DIR) / "corpus" / relative;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -760,10 +752,8 @@ TEST(ReadStlCorpus, UpperCaseKeywordsAndScientificNotation) {
 }
 
 TEST(ReadStlCorpus, BrokenFourVerticesIsFanTriangulated) {
-  const auto soup = read_mesh(corpus_file("stl-models/broken/fourVertices.ascii.stl"));
-  ASSERT_TRUE(soup) << soup.error().to_string();
-  EXPECT_EQ(soup->triangles.size(), 5u);
-  EXPECT_NE(find_diagnostic(*soup, "stl.polygon_facet"), nullptr);
+  expect_read_with_diagnostic(corpus_file("stl-models/broken/fourVertices.ascii.stl"), 5u,
+                              "stl.polygon_facet");
 }
 
 TEST(ReadStlCorpus, BrokenIncorrectFaceCounterIsError) {
@@ -776,10 +766,8 @@ TEST(ReadStlCorpus, BrokenIncorrectFaceCounterIsError) {
 }
 
 TEST(ReadStlCorpus, BrokenMissingNormalKeepsTheFacet) {
-  const auto soup = read_mesh(corpus_file("stl-models/broken/missingNormal.ascii.stl"));
-  ASSERT_TRUE(soup) << soup.error().to_string();
-  EXPECT_EQ(soup->triangles.size(), 4u);
-  EXPECT_NE(find_diagnostic(*soup, "stl.bad_normal"), nullptr);
+  expect_read_with_diagnostic(corpus_file("stl-models/broken/missingNormal.ascii.stl"), 4u,
+                              "stl.bad_normal");
 }
 
 TEST(ReadStlCorpus, BrokenFolderReadableFilesGiveTheirFacets) {
@@ -799,16 +787,12 @@ TEST(ReadStlCorpus, BrokenFolderReadableFilesGiveTheirFacets) {
 }
 
 TEST(ReadStlCorpus, BinaryWithFortyNineTrailingBytes) {
-  const auto soup = read_mesh(corpus_file("stl-models/misc/multiWordName.bin.stl"));
-  ASSERT_TRUE(soup) << soup.error().to_string();
-  EXPECT_EQ(soup->triangles.size(), 4u);
-  EXPECT_NE(find_diagnostic(*soup, "stl.trailing_bytes"), nullptr);
+  expect_read_with_diagnostic(corpus_file("stl-models/misc/multiWordName.bin.stl"), 4u,
+                              "stl.trailing_bytes");
 }
 
 TEST(ReadStlCorpus, OpenscadZeroByteFileIsError) {
-  const auto soup = read_mesh(corpus_file("openscad/tests/data/stl/empty.stl"));
-  ASSERT_FALSE(soup);
-  EXPECT_TRUE(contains(soup.error().message, "0 bytes")) << soup.error().message;
+  expect_refused(corpus_file("openscad/tests/data/stl/empty.stl"), "0 bytes");
 }
 
 TEST(ReadStlCorpus, ZeroFacetFilesAreErrors) {
@@ -836,17 +820,13 @@ TEST(ReadStlCorpus, OpenscadControlByteInsideAVertexLineIsError) {
 }
 
 TEST(ReadStlCorpus, OpenscadTooManyVerticesIsFanTriangulated) {
-  const auto soup = read_mesh(corpus_file("openscad/tests/data/stl/toomanyvertices.stl"));
-  ASSERT_TRUE(soup) << soup.error().to_string();
-  EXPECT_EQ(soup->triangles.size(), 14u);
-  EXPECT_NE(find_diagnostic(*soup, "stl.polygon_facet"), nullptr);
+  expect_read_with_diagnostic(corpus_file("openscad/tests/data/stl/toomanyvertices.stl"), 14u,
+                              "stl.polygon_facet");
 }
 
 TEST(ReadStlCorpus, OpenscadNanNormalKeepsTheFacet) {
-  const auto soup = read_mesh(corpus_file("openscad/tests/data/scad/bugs/issue945e.stl"));
-  ASSERT_TRUE(soup) << soup.error().to_string();
-  EXPECT_EQ(soup->triangles.size(), 94u);
-  EXPECT_NE(find_diagnostic(*soup, "stl.bad_normal"), nullptr);
+  expect_read_with_diagnostic(corpus_file("openscad/tests/data/scad/bugs/issue945e.stl"), 94u,
+                              "stl.bad_normal");
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 namespace strata {
@@ -103,95 +105,79 @@ TEST(BucketFacetsByFirstLayer, NoCrossingFacetGivesEmptyBuckets) {
   EXPECT_TRUE(b.facets.empty());
 }
 
+/// Mesh `m` cut by plane 0 of four_layers() moved up by half a layer: the plane z = 1.
+LayerSegments slice_at_z1(const IndexedMesh& m, std::span<const FacetIndex> candidates) {
+  GridSpec g = four_layers();
+  g.z0 = 0.5;
+  return slice_layer(m, candidates, g, 0);
+}
+
+/// A mesh of one facet, its corners in the order given.
+IndexedMesh one_facet(const std::array<Vec3, 3>& corners) {
+  IndexedMesh m;
+  m.vertices = {corners[0], corners[1], corners[2]};
+  m.triangles = {{0, 1, 2}};
+  return m;
+}
+
+/// The only segment of `s`, with its crossed edges and end points; fails the test otherwise.
+void expect_one_segment(const LayerSegments& s, CrossedEdge start_edge, CrossedEdge end_edge,
+                        Point2 start, Point2 end) {
+  ASSERT_EQ(s.segments.size(), 1u);
+  EXPECT_EQ(s.segments[0].start_edge, start_edge);
+  EXPECT_EQ(s.segments[0].end_edge, end_edge);
+  EXPECT_EQ(s.segments[0].start, start);
+  EXPECT_EQ(s.segments[0].end, end);
+}
+
+constexpr FacetIndex kFacet0[] = {0};
+
 TEST(SliceLayer, SegmentRunsWithTheMaterialOnItsLeft) {
   // Corner a below the plane, b and c above; the facet's normal points to -x -y, so the material
   // lies towards +x +y: the segment runs from edge c-a to edge a-b.
-  IndexedMesh m;
-  m.vertices = {{0, 0, 0}, {2, 0, 2}, {0, 2, 2}};
-  m.triangles = {{0, 1, 2}};
-  GridSpec g = four_layers();
-  g.z0 = 0.5;  // plane 0 at z = 1
-  const FacetIndex candidates[] = {0};
-  const LayerSegments s = slice_layer(m, candidates, g, 0);
+  const LayerSegments s = slice_at_z1(one_facet({{{0, 0, 0}, {2, 0, 2}, {0, 2, 2}}}), kFacet0);
   EXPECT_EQ(s.layer, 0u);
   EXPECT_EQ(s.z_mm, 1.0);
-  ASSERT_EQ(s.segments.size(), 1u);
-  const LayerSegment& seg = s.segments[0];
-  EXPECT_EQ(seg.facet, 0u);
-  EXPECT_EQ(seg.start_edge, (CrossedEdge{0, 2}));
-  EXPECT_EQ(seg.end_edge, (CrossedEdge{0, 1}));
-  EXPECT_EQ(seg.start, (Point2{0, 1}));
-  EXPECT_EQ(seg.end, (Point2{1, 0}));
+  expect_one_segment(s, CrossedEdge{0, 2}, CrossedEdge{0, 1}, Point2{0, 1}, Point2{1, 0});
+  EXPECT_EQ(s.segments.at(0).facet, 0u);
 }
 
 TEST(SliceLayer, ReversedFacetGivesTheReversedSegment) {
-  IndexedMesh m;
-  m.vertices = {{0, 0, 0}, {2, 0, 2}, {0, 2, 2}};
+  IndexedMesh m = one_facet({{{0, 0, 0}, {2, 0, 2}, {0, 2, 2}}});
   m.triangles = {{0, 2, 1}};
-  GridSpec g = four_layers();
-  g.z0 = 0.5;
-  const FacetIndex candidates[] = {0};
-  const LayerSegments s = slice_layer(m, candidates, g, 0);
-  ASSERT_EQ(s.segments.size(), 1u);
-  EXPECT_EQ(s.segments[0].start_edge, (CrossedEdge{0, 1}));
-  EXPECT_EQ(s.segments[0].end_edge, (CrossedEdge{0, 2}));
-  EXPECT_EQ(s.segments[0].start, (Point2{1, 0}));
-  EXPECT_EQ(s.segments[0].end, (Point2{0, 1}));
+  expect_one_segment(slice_at_z1(m, kFacet0), CrossedEdge{0, 1}, CrossedEdge{0, 2}, Point2{1, 0},
+                     Point2{0, 1});
 }
 
 TEST(SliceLayer, CornerOnThePlaneCountsAsAbove) {
   // b lies on the plane z = 1: edge a-b ends the segment at b itself.
-  IndexedMesh m;
-  m.vertices = {{0, 0, 0}, {2, 0, 1}, {0, 2, 2}};
-  m.triangles = {{0, 1, 2}};
-  GridSpec g = four_layers();
-  g.z0 = 0.5;
-  const FacetIndex candidates[] = {0};
-  const LayerSegments s = slice_layer(m, candidates, g, 0);
-  ASSERT_EQ(s.segments.size(), 1u);
-  EXPECT_EQ(s.segments[0].end_edge, (CrossedEdge{0, 1}));
-  EXPECT_EQ(s.segments[0].end, (Point2{2, 0}));
-  EXPECT_EQ(s.segments[0].start, (Point2{0, 1}));
+  expect_one_segment(slice_at_z1(one_facet({{{0, 0, 0}, {2, 0, 1}, {0, 2, 2}}}), kFacet0),
+                     CrossedEdge{0, 2}, CrossedEdge{0, 1}, Point2{0, 1}, Point2{2, 0});
 }
 
 TEST(SliceLayer, FacetTouchingThePlaneFromAboveOrLyingInItGivesNoSegment) {
   IndexedMesh m;
   m.vertices = {{0, 0, 1}, {1, 0, 2}, {0, 1, 2}, {1, 1, 1}, {2, 1, 1}};
   m.triangles = {{0, 1, 2}, {0, 3, 4}};  // touching from above; lying in the plane
-  GridSpec g = four_layers();
-  g.z0 = 0.5;
   const FacetIndex candidates[] = {0, 1};
-  EXPECT_TRUE(slice_layer(m, candidates, g, 0).segments.empty());
+  EXPECT_TRUE(slice_at_z1(m, candidates).segments.empty());
 }
 
 TEST(SliceLayer, FacetTouchingThePlaneFromBelowGivesAPointSegmentAtTheCorner) {
   // Only b reaches the plane; as it counts as above, both crossed edges end at b.
-  IndexedMesh m;
-  m.vertices = {{0, 0, 0}, {1, 0, 1}, {0, 1, 0}};
-  m.triangles = {{0, 1, 2}};
-  GridSpec g = four_layers();
-  g.z0 = 0.5;
-  const FacetIndex candidates[] = {0};
-  const LayerSegments s = slice_layer(m, candidates, g, 0);
-  ASSERT_EQ(s.segments.size(), 1u);
-  EXPECT_EQ(s.segments[0].start_edge, (CrossedEdge{2, 1}));
-  EXPECT_EQ(s.segments[0].end_edge, (CrossedEdge{0, 1}));
-  EXPECT_EQ(s.segments[0].start, (Point2{1, 0}));
-  EXPECT_EQ(s.segments[0].end, (Point2{1, 0}));
+  expect_one_segment(slice_at_z1(one_facet({{{0, 0, 0}, {1, 0, 1}, {0, 1, 0}}}), kFacet0),
+                     CrossedEdge{2, 1}, CrossedEdge{0, 1}, Point2{1, 0}, Point2{1, 0});
 }
 
 TEST(SliceLayer, OnlyTheCandidatesAreCutInTheirOrder) {
-  IndexedMesh m;
-  m.vertices = {{0, 0, 0}, {2, 0, 2}, {0, 2, 2}};
+  IndexedMesh m = one_facet({{{0, 0, 0}, {2, 0, 2}, {0, 2, 2}}});
   m.triangles = {{0, 1, 2}, {0, 2, 1}, {0, 1, 2}};
-  GridSpec g = four_layers();
-  g.z0 = 0.5;
   const FacetIndex candidates[] = {2, 1};
-  const LayerSegments s = slice_layer(m, candidates, g, 0);
+  const LayerSegments s = slice_at_z1(m, candidates);
   ASSERT_EQ(s.segments.size(), 2u);
   EXPECT_EQ(s.segments[0].facet, 2u);
   EXPECT_EQ(s.segments[1].facet, 1u);
-  EXPECT_TRUE(slice_layer(m, {}, g, 0).segments.empty());
+  EXPECT_TRUE(slice_at_z1(m, {}).segments.empty());
 }
 
 }  // namespace

@@ -1,22 +1,13 @@
 // What the view page holds of each layer: packed as the cells file, blocks for 3D, the budget.
 #include <gtest/gtest.h>
-#include <zlib.h>
 
 #include "strata/view/view_stack.hpp"
+#include "support/page_encodings.hpp"
 
 namespace strata::view {
 namespace {
 
-std::string inflate(const std::string& packed, std::size_t size) {
-  std::string out(size, '\0');
-  uLongf n = static_cast<uLongf>(size);
-  EXPECT_EQ(
-      uncompress(reinterpret_cast<Bytef*>(out.data()), &n,
-                 reinterpret_cast<const Bytef*>(packed.data()), static_cast<uLong>(packed.size())),
-      Z_OK);
-  EXPECT_EQ(n, size);
-  return out;
-}
+using test::inflate;
 
 SliceRunInfo run_on(std::uint32_t nx, std::uint32_t ny, std::uint32_t nz) {
   SliceRunInfo run;

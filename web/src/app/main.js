@@ -143,15 +143,20 @@ window.addEventListener('drop', (event) => {
   openFile(event.dataTransfer?.files?.[0]);
 });
 
-$('slice').addEventListener('click', async () => {
+/** The form's options; null after showing why they cannot be read. */
+function formOptions() {
   message(null);
-  let options;
   try {
-    options = form.values();
+    return form.values();
   } catch (e) {
     message(e.message);
-    return;
+    return null;
   }
+}
+
+$('slice').addEventListener('click', async () => {
+  const options = formOptions();
+  if (!options) return;
   try {
     const { id } = await api.slice(selected, options);
     await select(id);
@@ -170,14 +175,8 @@ $('cancel').addEventListener('click', async () => {
 });
 
 $('validate').addEventListener('click', async () => {
-  message(null);
-  let options;
-  try {
-    options = form.values();
-  } catch (e) {
-    message(e.message);
-    return;
-  }
+  const options = formOptions();
+  if (!options) return;
   try {
     await api.validate(selected, options);
   } catch (e) {
