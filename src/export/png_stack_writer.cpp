@@ -112,15 +112,15 @@ class PngStackWriter final : public detail::LayerFilesSink {
   bool needs_cells() const override { return true; }
 
  protected:
-  Result<void> write_layer(OutputFile& out, const LayerResult& layer) const override {
+  Result<void> write_layer(OutputFile& out, const LayerResult& layer) override {
     const GridSpec& g = run().grid;
-    std::vector<std::uint8_t> row_buffer(g.nx);
+    row_buffer_.resize(g.nx);
     PngImage image;
     image.width = g.nx;
     image.height = g.ny;
     image.cells = layer.cells.data();
     image.grey = {options_.empty, options_.interior, options_.empty, options_.boundary};
-    image.row_buffer = row_buffer.data();
+    image.row_buffer = row_buffer_.data();
     image.compression_level = std::clamp(options_.compression_level, 0, 9);
     image.pixels_per_metre_x = pixels_per_metre(g.dx);
     image.pixels_per_metre_y = pixels_per_metre(g.dy);
@@ -140,6 +140,7 @@ class PngStackWriter final : public detail::LayerFilesSink {
 
  private:
   PngOptions options_;
+  std::vector<std::uint8_t> row_buffer_;
 };
 
 }  // namespace

@@ -133,36 +133,9 @@ void SingleFileSink::abort() noexcept {
 
 // ---------------------------------------------------------------------------------------------
 
-namespace {
-
-// Layer copies the jobs may hold at once, so a grid of huge layers still streams.
-constexpr std::size_t kMaxBytesInFlight = std::size_t{64} << 20;
-
-}  // namespace
-
-/// What a job needs of its layer: copies, since the layer is gone when add_layer returns.
-struct LayerFilesSink::HeldLayer {
-  std::uint32_t layer = 0;
-  double z_mm = 0.0;
-  std::vector<CellClass> cells;
-  LayerContours contours;
-  std::vector<HatchSegment> hatches;
-  std::filesystem::path path;
-
-  std::size_t bytes() const {
-    std::size_t n = cells.size() + hatches.size() * sizeof(HatchSegment);
-    for (const Contour& c : contours.loops) n += c.points.size() * sizeof(Point2) + sizeof(c);
-    return n + sizeof(*this);
-  }
-};
-
 LayerFilesSink::LayerFilesSink(const std::filesystem::path& dir, const char* subdir,
                                std::string stem, const char* extension, const char* kind)
-    : folder_(dir / subdir),
-      stem_(std::move(stem)),
-      extension_(extension),
-      kind_(kind),
-      jobs_(std::make_unique<tbb::task_group>()) {}
+    : folder_(dir / subdir), stem_(std::move(stem)), extension_(extension), kind_(kind) {}
 
 LayerFilesSink::~LayerFilesSink() {
   if (progress_.state() == SinkProgress::State::Started) abort();
@@ -182,68 +155,24 @@ Result<void> LayerFilesSink::begin(const SliceRunInfo& run) {
 
 Result<void> LayerFilesSink::add_layer(const LayerResult& layer) {
   if (auto ok = progress_.check_layer(layer, needs_cells(), kind_); !ok) return ok;
-  auto held = std::make_shared<HeldLayer>();
-  held->layer = layer.layer;
-  held->z_mm = layer.z_mm;
-  if (needs_cells()) held->cells = layer.cells;
-  held->contours = layer.contours;
-  held->hatches = layer.hatches;
-  held->path = folder_ / layer_file_name(stem_, layer.layer, extension_);
-  bytes_in_flight_ += held->bytes();
-  if (bytes_in_flight_ > kMaxBytesInFlight) {
-    if (auto ok = wait_for_jobs(); !ok) return ok;
-    bytes_in_flight_ = held->bytes();
-  } else {
-    std::lock_guard lock(mutex_);
-    if (failure_) return *failure_;
-  }
-  jobs_->run([this, held] { write_held(*held); });
+  const auto path = folder_ / layer_file_name(stem_, layer.layer, extension_);
+  auto out = OutputFile::create(path);
+  if (!out) return out.error();
+  if (auto ok = write_layer(*out, layer); !ok) return ok;  // ~OutputFile removes the temporary
+  if (auto ok = out->commit(); !ok) return ok;
+  created_.add_file(path);
   progress_.layer_done();
-  return {};
-}
-
-void LayerFilesSink::write_held(const HeldLayer& held) {
-  {
-    std::lock_guard lock(mutex_);
-    if (failure_) return;  // the run is failing: no more files
-  }
-  auto out = OutputFile::create(held.path);
-  Result<void> ok = out ? Result<void>{} : Result<void>{out.error()};
-  if (ok) {
-    const LayerResult view{held.layer, held.z_mm, held.cells, held.contours, held.hatches};
-    ok = write_layer(*out, view);  // on failure ~OutputFile removes the temporary
-    if (ok) ok = out->commit();
-  }
-  std::lock_guard lock(mutex_);
-  if (!ok) {
-    if (!failure_) failure_ = ok.error();
-    return;
-  }
-  created_.add_file(held.path);
-}
-
-Result<void> LayerFilesSink::wait_for_jobs() {
-  jobs_->wait();  // rethrows what a job threw; run_slice then aborts the sinks
-  std::lock_guard lock(mutex_);
-  if (failure_) return *failure_;
   return {};
 }
 
 Result<void> LayerFilesSink::finish() {
   if (auto ok = progress_.check_complete(kind_); !ok) return ok;
-  if (auto ok = wait_for_jobs(); !ok) return ok;
   remove_stale_layers();
   progress_.set_state(SinkProgress::State::Finished);
   return {};
 }
 
 void LayerFilesSink::abort() noexcept {
-  try {
-    jobs_->wait();
-  } catch (...) {
-    // A job's exception was already reported, or will not be: the files go either way.
-  }
-  std::lock_guard lock(mutex_);
   created_.remove_all();
   progress_.set_state(SinkProgress::State::Aborted);
 }

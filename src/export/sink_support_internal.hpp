@@ -4,14 +4,10 @@
 // them away), the order checks every sink makes, little-endian encoding, number formatting.
 
 #include <fmt/format.h>
-#include <tbb/task_group.h>
 
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <memory>
-#include <mutex>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -97,10 +93,6 @@ class SingleFileSink : public LayerSink {
 
 /// Base of the sinks that write a file a layer into `dir/<subdir>/<stem>_<k>.<extension>`; each
 /// file is renamed into place as soon as it is complete, and remembered so abort() can remove it.
-/// The files are encoded and written on TBB's workers while the next layers are computed: each
-/// job holds a copy of what its layer's file needs, the copies in flight are bounded in bytes,
-/// and finish() and abort() wait for every job. A job's failure is returned by the next
-/// add_layer() or by finish().
 class LayerFilesSink : public LayerSink {
  public:
   LayerFilesSink(const std::filesystem::path& dir, const char* subdir, std::string stem,
@@ -116,17 +108,11 @@ class LayerFilesSink : public LayerSink {
   bool needs_cells() const override = 0;
 
  protected:
-  /// Writes one layer's file; called on a worker thread, several layers at once, so it may only
-  /// read the sink's state (run(), stem(), its options).
-  virtual Result<void> write_layer(OutputFile& out, const LayerResult& layer) const = 0;
+  virtual Result<void> write_layer(OutputFile& out, const LayerResult& layer) = 0;
   const SliceRunInfo& run() const { return progress_.run(); }
   const std::string& stem() const { return stem_; }
 
  private:
-  struct HeldLayer;
-  void write_held(const HeldLayer& held);
-  /// Waits for every job; the first failure of any, if one failed.
-  Result<void> wait_for_jobs();
   /// Removes `<stem>_<index>.<extension>` files with index >= nz left by an earlier run.
   void remove_stale_layers() noexcept;
 
@@ -135,11 +121,7 @@ class LayerFilesSink : public LayerSink {
   const char* extension_;
   const char* kind_;
   SinkProgress progress_;
-  std::mutex mutex_;  ///< guards created_ and failure_ against the jobs
   CreatedPaths created_;
-  std::optional<Error> failure_;
-  std::unique_ptr<tbb::task_group> jobs_;
-  std::size_t bytes_in_flight_ = 0;  ///< held since the last wait
 };
 
 /// Appends a double in the shortest form that reads back to the same bits.
