@@ -89,7 +89,11 @@ async function setOptions(page, options) {
 /** The frame of the viewer of a job, once its page is ready. */
 /** The viewer of job id: of its slice (sliced), or of the model alone before it is sliced. */
 async function viewerFrame(page, id, sliced = true) {
-  const element = await page.waitForSelector(`[data-testid="viewer-${id}"][data-sliced="${sliced}"]`);
+  // A check or slice under the sanitizers, beside the other tests on two cores, can take longer
+  // than Playwright's default 30 s.
+  const element = await page.waitForSelector(`[data-testid="viewer-${id}"][data-sliced="${sliced}"]`, {
+    timeout: 120_000,
+  });
   const frame = await element.contentFrame();
   assert.ok(frame, `no viewer frame for job ${id}`);
   await frame.waitForFunction(() => window.strataView?.ready);
