@@ -2,7 +2,7 @@
 // Radius 25 mm, centred on the origin (50 x 50 x 50 mm: 500 layers of 0.1 mm).
 // A latitude-longitude sphere: nu meridians, nv bands, fans of nu facets at the poles,
 // 2 nu (nv - 1) facets in all, nu = 2 nv.
-import { openSync, writeSync, closeSync } from 'node:fs';
+import { writeBinaryStl } from './binary_stl.mjs';
 
 const [out, facetsArg] = process.argv.slice(2);
 if (!out) {
@@ -23,25 +23,14 @@ const point = (u, v) => {
           radius * Math.sin(b)];
 };
 const count = 2 * nu * (nv - 1);
-const buffer = Buffer.alloc(84 + 50 * count);
-buffer.write('strata benchmark sphere', 0, 'ascii');
-buffer.writeUInt32LE(count, 80);
-let at = 84;
-const facet = (a, b, c) => {
-  at += 12;  // zero normal: readers compute their own
-  for (const p of [a, b, c]) for (const x of p) { buffer.writeFloatLE(x, at); at += 4; }
-  at += 2;
-};
-// Counter-clockwise seen from outside, so the normals point out.
-for (let u = 0; u < nu; ++u) {
-  for (let v = 0; v < nv; ++v) {
-    const p00 = point(u, v), p10 = point(u + 1, v), p01 = point(u, v + 1), p11 = point(u + 1, v + 1);
-    if (v !== 0) facet(p00, p10, p11);
-    if (v !== nv - 1) facet(p00, p11, p01);
+writeBinaryStl(out, 'strata benchmark sphere', count, (facet) => {
+  // Counter-clockwise seen from outside, so the normals point out.
+  for (let u = 0; u < nu; ++u) {
+    for (let v = 0; v < nv; ++v) {
+      const p00 = point(u, v), p10 = point(u + 1, v), p01 = point(u, v + 1), p11 = point(u + 1, v + 1);
+      if (v !== 0) facet(p00, p10, p11);
+      if (v !== nv - 1) facet(p00, p11, p01);
+    }
   }
-}
-if (at !== buffer.length) throw new Error(`wrote ${at} of ${buffer.length} bytes`);
-const fd = openSync(out, 'w');
-writeSync(fd, buffer);
-closeSync(fd);
+});
 console.log(`${out}: ${count} facets`);

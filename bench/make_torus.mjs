@@ -1,6 +1,6 @@
 // Writes a binary STL torus for the benchmarks: node bench/make_torus.mjs OUT.stl FACETS
 // R = 40 mm, r = 15 mm, centred on the origin, axis z (110 x 110 x 30 mm).
-import { openSync, writeSync, closeSync } from 'node:fs';
+import { writeBinaryStl } from './binary_stl.mjs';
 
 const [out, facetsArg] = process.argv.slice(2);
 if (!out) {
@@ -18,23 +18,13 @@ const point = (u, v) => {
   return [(R + r * Math.cos(b)) * Math.cos(a), (R + r * Math.cos(b)) * Math.sin(a), r * Math.sin(b)];
 };
 const count = 2 * nu * nv;
-const buffer = Buffer.alloc(84 + 50 * count);
-buffer.write('strata benchmark torus', 0, 'ascii');
-buffer.writeUInt32LE(count, 80);
-let at = 84;
-const facet = (a, b, c) => {
-  at += 12;  // zero normal: readers compute their own
-  for (const p of [a, b, c]) for (const x of p) { buffer.writeFloatLE(x, at); at += 4; }
-  at += 2;
-};
-for (let u = 0; u < nu; ++u) {
-  for (let v = 0; v < nv; ++v) {
-    const p00 = point(u, v), p10 = point(u + 1, v), p01 = point(u, v + 1), p11 = point(u + 1, v + 1);
-    facet(p00, p10, p11);
-    facet(p00, p11, p01);
+writeBinaryStl(out, 'strata benchmark torus', count, (facet) => {
+  for (let u = 0; u < nu; ++u) {
+    for (let v = 0; v < nv; ++v) {
+      const p00 = point(u, v), p10 = point(u + 1, v), p01 = point(u, v + 1), p11 = point(u + 1, v + 1);
+      facet(p00, p10, p11);
+      facet(p00, p11, p01);
+    }
   }
-}
-const fd = openSync(out, 'w');
-writeSync(fd, buffer);
-closeSync(fd);
+});
 console.log(`${out}: ${count} facets`);
