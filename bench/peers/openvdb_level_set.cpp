@@ -33,9 +33,8 @@ int main(int argc, char** argv) {
     triangles.reserve(stl.triangles.size());
     for (const auto& t : stl.triangles) triangles.emplace_back(t[0], t[1], t[2]);
     const auto transform = openvdb::math::Transform::createLinearTransform(voxel_mm);
-    const auto distance =
-        openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*transform, points, triangles,
-                                                           half_width);
+    const auto distance = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*transform, points,
+                                                                             triangles, half_width);
     const auto interior = openvdb::tools::sdfInteriorMask(*distance);
     std::printf("band voxels %llu interior voxels %llu\n",
                 static_cast<unsigned long long>(distance->activeVoxelCount()),
