@@ -89,6 +89,15 @@ void BM_SliceLayerSegments(benchmark::State& state) {
 }
 BENCHMARK(BM_SliceLayerSegments)->Unit(benchmark::kMicrosecond);
 
+/// The layers each facet crosses: two exact plane counts a facet from a first guess (count_prefix).
+void BM_FacetLayerRanges(benchmark::State& state) {
+  const IndexedMesh& mesh = model("real/rear_case.stl");
+  const GridSpec grid = *make_grid(mesh.bounds(), GridOptions{});
+  for (auto _ : state) benchmark::DoNotOptimize(facet_layer_ranges(mesh, grid));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(mesh.triangles.size()));
+}
+BENCHMARK(BM_FacetLayerRanges)->Unit(benchmark::kMicrosecond);
+
 void BM_ReadStlBinary(benchmark::State& state) {
   const std::string path = std::string(STRATA_DATA_DIR) + "/real/rear_case.stl";
   for (auto _ : state) benchmark::DoNotOptimize(io::read_mesh(path));

@@ -7,4 +7,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh test
 bash scripts/build.sh asan
-ctest --preset asan
+ctest --preset asan || { bash scripts/failure_digest.sh build/asan; exit 1; }

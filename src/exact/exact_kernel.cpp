@@ -14,6 +14,7 @@
 #include "exact/exact_kernel_internal.hpp"
 #include "exact/exact_loops_internal.hpp"
 #include "exact/exact_soup_internal.hpp"
+#include "strata/core/internal_failure.hpp"
 #include "strata/exact/slice_exact.hpp"
 
 namespace strata {
@@ -215,10 +216,6 @@ ExactSliceReport ExactKernel::report() const {
 
 namespace {
 
-void abort_all(std::span<LayerSink* const> sinks) {
-  for (LayerSink* sink : sinks) sink->abort();
-}
-
 void add_report_diagnostics(const ExactSliceReport& r, Diagnostics& out) {
   if (r.polygons_removed > 0) {
     out.push_back({Severity::Info, "exact.polygons_removed",
@@ -261,22 +258,20 @@ Result<SliceSummary> slice_model_exact(const IndexedMesh& mesh, const GridSpec& 
   }
   if (auto ok = exact::detail::check_mesh_for_exact(mesh); !ok) return ok.error();
   bool started = false;
-  try {
-    exact::detail::ExactKernel kernel(mesh, grid, options);
-    started = true;
-    Result<SliceSummary> result = run_slice(mesh, grid, options, kernel, sinks, progress);
-    const ExactSliceReport r = kernel.report();
-    if (report != nullptr) *report = r;
-    if (result) add_report_diagnostics(r, result->diagnostics);
-    return result;
-  } catch (const std::bad_alloc&) {
-    if (started) abort_all(sinks);
-    return Error{ErrorCode::Internal, "exact path: out of memory", {}};
-  } catch (const std::exception& e) {
-    // CGAL's failures (CGAL::Failure_exception) and broken invariants (InternalError) alike.
-    if (started) abort_all(sinks);
-    return Error{ErrorCode::Internal, fmt::format("exact path failed: {}", e.what()), {}};
-  }
+  return catch_internal_failure(
+      "exact path",
+      [&]() -> Result<SliceSummary> {
+        exact::detail::ExactKernel kernel(mesh, grid, options);
+        started = true;
+        Result<SliceSummary> result = run_slice(mesh, grid, options, kernel, sinks, progress);
+        const ExactSliceReport r = kernel.report();
+        if (report != nullptr) *report = r;
+        if (result) add_report_diagnostics(r, result->diagnostics);
+        return result;
+      },
+      [&] {
+        if (started) abort_all(sinks);
+      });
 }
 
 }  // namespace strata

@@ -1,5 +1,8 @@
 #include "strata/exact/outline_contours.hpp"
 
+#include <exception>
+#include <new>
+
 #include "exact/exact_arrangement_internal.hpp"
 #include "exact/exact_cut_internal.hpp"
 #include "exact/exact_loops_internal.hpp"
@@ -15,6 +18,19 @@ LayerContours outline_contours(const IndexedMesh& mesh, std::span<const FacetInd
   LayerContours out = detail::finish_contours(k, z, std::move(a.loops), a.open_chains);
   out.outline = true;
   return out;
+}
+
+std::optional<LayerContours> try_outline_contours(const IndexedMesh& mesh,
+                                                  std::span<const FacetIndex> candidates,
+                                                  const GridSpec& grid, std::uint32_t k,
+                                                  FillRule rule) {
+  try {
+    return outline_contours(mesh, candidates, grid, k, rule);
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace strata::exact

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 
+#include "strata/core/internal_failure.hpp"
 #include "strata/voxel/boundary_shell.hpp"
 
 namespace strata {
@@ -20,10 +21,6 @@ namespace {
 constexpr std::size_t kMaxOpenChainReports = 1000;
 // Memory the layers of one batch may take (solid bitmaps and classes, one byte a cell each).
 constexpr double kBatchMemoryBytes = 2.0e9;
-
-void abort_all(std::span<LayerSink* const> sinks) {
-  for (LayerSink* sink : sinks) sink->abort();
-}
 
 /// "3, 4, 5" for the first few layers that `has` picks, "3, 4, 5, ..." when there are more.
 template <class Has>
@@ -222,16 +219,9 @@ Result<SliceSummary> run_slice(const IndexedMesh& mesh, const GridSpec& grid,
                                const ProgressCallback& progress) {
   // A failure on a worker thread reaches here through tbb::parallel_for; a caller gets an Error
   // and no partial output, whichever kernel failed.
-  try {
-    return run_layers(mesh, grid, options, kernel, sinks, progress);
-  } catch (const std::bad_alloc&) {
-    abort_all(sinks);
-    return Error{ErrorCode::Internal, fmt::format("{}: out of memory", kernel.name()), {}};
-  } catch (const std::exception& e) {
-    // CGAL's failures (CGAL::Failure_exception) and broken invariants (InternalError) alike.
-    abort_all(sinks);
-    return Error{ErrorCode::Internal, fmt::format("{} failed: {}", kernel.name(), e.what()), {}};
-  }
+  return catch_internal_failure(
+      kernel.name(), [&] { return run_layers(mesh, grid, options, kernel, sinks, progress); },
+      [&] { abort_all(sinks); });
 }
 
 }  // namespace strata

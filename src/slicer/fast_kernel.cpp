@@ -1,6 +1,5 @@
 #include <algorithm>
-#include <exception>
-#include <new>
+#include <optional>
 
 #include "slicer/fast_kernel_internal.hpp"
 #include "strata/contour/assemble_contours.hpp"
@@ -52,16 +51,12 @@ LayerContours FastKernel::outline_layer(LayerContours chained,
   // Issue 3: loops that cross, touch, stay open or nest without alternating are not boundaries
   // of the filled region; the exact path's outline of that region replaces them, so both paths
   // give the same contours. The fill rule is nonzero or evenodd (see the class), the two that
-  // have an arrangement outline.
-  LayerContours out;
-  try {
-    out = exact::outline_contours(mesh_, candidates, grid_, k, options_.fill_rule);
-  } catch (const std::bad_alloc&) {
-    throw;
-  } catch (const std::exception&) {
-    // A CGAL failure: keep the chained loops; their flags still say why they are not simple.
-    return chained;
-  }
+  // have an arrangement outline. Should CGAL fail, the chained loops stay; their flags still say
+  // why they are not simple.
+  std::optional<LayerContours> outline =
+      exact::try_outline_contours(mesh_, candidates, grid_, k, options_.fill_rule);
+  if (!outline) return chained;
+  LayerContours out = std::move(*outline);
   // Open chains stay reported as chained, with their end points (issue 4: never hidden).
   for (Contour& c : chained.loops) {
     if (c.kind == LoopKind::Open) out.loops.push_back(std::move(c));

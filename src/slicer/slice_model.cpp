@@ -2,10 +2,8 @@
 
 #include <fmt/format.h>
 
-#include <exception>
-#include <new>
-
 #include "slicer/fast_kernel_internal.hpp"
+#include "strata/core/internal_failure.hpp"
 #include "winding/winding_kernel.hpp"
 
 namespace strata {
@@ -37,20 +35,19 @@ Result<SliceSummary> slice_model(const IndexedMesh& mesh, const GridSpec& grid,
                                  const ProgressCallback& progress) {
   // run_slice turns a failure while slicing into an Error; building a kernel may fail too, before
   // any sink has begun.
-  try {
-    if (options.fill_rule == FillRule::Winding) {
-      detail::WindingKernel kernel(mesh, grid, options);
-      auto summary = run_slice(mesh, grid, options, kernel, sinks, progress);
-      if (summary) add_winding_diagnostics(kernel, *summary);
-      return summary;
-    }
-    detail::FastKernel kernel(mesh, grid, options);
-    return run_slice(mesh, grid, options, kernel, sinks, progress);
-  } catch (const std::bad_alloc&) {
-    return Error{ErrorCode::Internal, "fast path: out of memory", {}};
-  } catch (const std::exception& e) {
-    return Error{ErrorCode::Internal, fmt::format("fast path failed: {}", e.what()), {}};
-  }
+  return catch_internal_failure(
+      "fast path",
+      [&]() -> Result<SliceSummary> {
+        if (options.fill_rule == FillRule::Winding) {
+          detail::WindingKernel kernel(mesh, grid, options);
+          auto summary = run_slice(mesh, grid, options, kernel, sinks, progress);
+          if (summary) add_winding_diagnostics(kernel, *summary);
+          return summary;
+        }
+        detail::FastKernel kernel(mesh, grid, options);
+        return run_slice(mesh, grid, options, kernel, sinks, progress);
+      },
+      [] {});
 }
 
 }  // namespace strata

@@ -17,6 +17,21 @@ const ARGS = [
   '--disable-quic',
 ];
 
+/**
+ * How long a page may take to show what a test waits for (a frame drawn, a job done). Under the
+ * sanitizers, beside the other tests on two cores, Chromium's software WebGL and the strata
+ * processes the pages start run several times slower than alone; Playwright's default of 30 s
+ * was once too short there. A test that fails still fails, only later.
+ */
+export const PAGE_TIMEOUT_MS = 120_000;
+
+/** A new browser context whose waits and actions allow PAGE_TIMEOUT_MS. */
+export async function newContext(browser, options) {
+  const context = await browser.newContext(options);
+  context.setDefaultTimeout(PAGE_TIMEOUT_MS);
+  return context;
+}
+
 let launched = null;
 let users = 0;
 

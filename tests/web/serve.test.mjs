@@ -12,7 +12,7 @@ import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync
 import http from 'node:http';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { acquireBrowser, releaseBrowser } from './browser.mjs';
+import { acquireBrowser, newContext, releaseBrowser } from './browser.mjs';
 
 const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const artifacts = path.resolve(process.env.STRATA_TEST_ARTIFACTS || path.join(repo, 'build', 'web-artifacts'));
@@ -67,7 +67,7 @@ function rawRequest(method, target, { body = null, headers = {} } = {}) {
 }
 
 async function openApp() {
-  const context = await browser.newContext({ viewport: VIEWPORT, deviceScaleFactor: 1, acceptDownloads: true });
+  const context = await newContext(browser, { viewport: VIEWPORT, deviceScaleFactor: 1, acceptDownloads: true });
   const errors = [];
   const page = await context.newPage();
   page.on('pageerror', (error) => errors.push(`page error: ${error.message}`));
@@ -162,10 +162,10 @@ describe('strata serve', { skip: cli ? false : 'STRATA_CLI is not set' }, () => 
     await setOptions(page, { shell: 0.5 });
     await page.click('[data-testid="slice"]');
     // The first job's "done" is still on the page until the new job is selected: wait for that.
-    await page.waitForFunction((first) => window.strataServe.selected() !== first, id, { timeout: 60_000 });
+    await page.waitForFunction((first) => window.strataServe.selected() !== first, id);
     const second = await page.evaluate(() => window.strataServe.selected());
     await page.waitForFunction(() => window.strataServe.job()?.slice?.state === 'done', null, { timeout: 120_000 });
-    await page.waitForSelector('[data-testid="slice-done"]', { timeout: 10_000 });
+    await page.waitForSelector('[data-testid="slice-done"]');
     assert.notEqual(second, id, 'a new parameter set is a new job');
     await page.check(`[data-testid="job-${id}"] input[type="checkbox"]`);
     await viewerFrame(page, second);
@@ -250,7 +250,7 @@ describe('strata serve', { skip: cli ? false : 'STRATA_CLI is not set' }, () => 
     const id = await page.evaluate(() => window.strataServe.selected());
     await page.waitForFunction(() => (window.strataServe.job()?.slice.done ?? 0) > 0, null, { timeout: 120_000 });
     await page.click('[data-testid="cancel"]');
-    await page.waitForSelector('[data-testid="slice-cancelled"]', { timeout: 60_000 });
+    await page.waitForSelector('[data-testid="slice-cancelled"]');
     const status = JSON.parse((await rawRequest('GET', `/api/jobs/${id}`)).text);
     assert.equal(status.slice.state, 'cancelled');
     assert.ok(status.slice.done < status.slice.total, 'cancelled before the last layer');

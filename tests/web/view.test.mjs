@@ -16,7 +16,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
-import { acquireBrowser, releaseBrowser } from './browser.mjs';
+import { acquireBrowser, newContext, releaseBrowser } from './browser.mjs';
 import { buildTemplate, insertData } from '../../web/build.mjs';
 import { CANVAS_BACKGROUND, CELL_RGB } from '../../web/src/palette.js';
 import { classify, fixtureJson, WORDS } from './make_fixture.mjs';
@@ -129,7 +129,7 @@ after(async () => {
 
 /** Opens a page with the network blocked (file:// only) and its errors recorded. */
 async function open(file) {
-  const context = await browser.newContext({ viewport: VIEWPORT, deviceScaleFactor: 1 });
+  const context = await newContext(browser, { viewport: VIEWPORT, deviceScaleFactor: 1 });
   const record = { errors: [], blocked: [] };
   await context.route('**/*', (route) => {
     const url = route.request().url();
@@ -447,7 +447,7 @@ async function checkPage(t, spec, page, record) {
 
   await t.test('the section shows the cells from bottom to top, boundary at top and bottom', async () => {
     await page.evaluate(() => document.querySelector('#section-canvas').scrollIntoView({ block: 'center' }));
-    await page.waitForFunction(() => window.strataView.section()?.complete === true, null, { timeout: 20_000 });
+    await page.waitForFunction(() => window.strataView.section()?.complete === true);
     await rendered(page);
     const rect = await gridRect(page, '#section-canvas');
     const section = await page.evaluate(() => window.strataView.section());

@@ -4,6 +4,7 @@
 // that the fast path can take it for the layers whose chained loops are not simple (issue 3).
 
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include "strata/contour/contour.hpp"
@@ -21,5 +22,12 @@ namespace strata::exact {
 /// Thread safety: layers may be outlined concurrently; the mesh must not change meanwhile.
 LayerContours outline_contours(const IndexedMesh& mesh, std::span<const FacetIndex> candidates,
                                const GridSpec& grid, std::uint32_t k, FillRule rule);
+
+/// outline_contours, or nothing when CGAL fails (a std::exception other than std::bad_alloc,
+/// which propagates).
+std::optional<LayerContours> try_outline_contours(const IndexedMesh& mesh,
+                                                  std::span<const FacetIndex> candidates,
+                                                  const GridSpec& grid, std::uint32_t k,
+                                                  FillRule rule);
 
 }  // namespace strata::exact

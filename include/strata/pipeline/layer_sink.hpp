@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -46,5 +47,10 @@ class LayerSink {
   /// and hands every sink an empty `cells`.
   virtual bool needs_cells() const { return true; }
 };
+
+/// Aborts every sink (each abort() is idempotent and does not throw).
+inline void abort_all(std::span<LayerSink* const> sinks) noexcept {
+  for (LayerSink* sink : sinks) sink->abort();
+}
 
 }  // namespace strata

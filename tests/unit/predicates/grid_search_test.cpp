@@ -40,7 +40,17 @@ TEST(CountPrefix, AnyGuessGivesTheExactCount) {
   }
 }
 
-TEST(CountPrefix, EmptyRangeCountsZero) { EXPECT_EQ(count_prefix(3.0, 0, CountingBelow{0}), 0u); }
+TEST(CountPrefix, AOneElementRangeCountsZeroOrOneAndEvaluatesOnlyItsElement) {
+  for (const std::uint32_t boundary : {0u, 1u}) {
+    for (const double guess : {-1.0, 0.0, 0.5, 1.0, 7.0}) {
+      const auto below = [&](std::uint32_t k) {
+        EXPECT_EQ(k, 0u);
+        return k < boundary;
+      };
+      EXPECT_EQ(count_prefix(guess, 1, below), boundary) << "guess " << guess;
+    }
+  }
+}
 
 TEST(CountPrefix, ARightGuessCostsTwoEvaluations) {
   CountingBelow below{37};
@@ -57,6 +67,46 @@ TEST(CountPrefix, AFarGuessCostsLogarithmicallyManyEvaluations) {
   CountingBelow high{1001000};
   EXPECT_EQ(count_prefix(1000.0, n, high), 1001000u);
   EXPECT_LE(high.calls, 45);
+}
+
+TEST(ClampGuess, NaNAndNegativesGiveZeroAndGuessesPastTheEndGiveN) {
+  EXPECT_EQ(clamp_guess(std::numeric_limits<double>::quiet_NaN(), 10), 0u);
+  EXPECT_EQ(clamp_guess(-0.5, 10), 0u);
+  EXPECT_EQ(clamp_guess(0.0, 10), 0u);
+  EXPECT_EQ(clamp_guess(0.999, 10), 0u);
+  EXPECT_EQ(clamp_guess(9.999, 10), 9u);
+  EXPECT_EQ(clamp_guess(10.0, 10), 10u);
+  EXPECT_EQ(clamp_guess(std::numeric_limits<double>::infinity(), 10), 10u);
+  EXPECT_EQ(clamp_guess(5.0, 0), 0u);
+}
+
+TEST(SearchPrefix, FindsTheAnswerOnEitherSideOfEveryWrongGuess) {
+  // Every wrong guess k0 of every answer in every small range, both directions: the gallop's
+  // clamping at 0 and at n and the bisection's both outcomes.
+  for (std::uint32_t n = 1; n <= 40; ++n) {
+    for (std::uint32_t boundary = 0; boundary <= n; ++boundary) {
+      for (std::uint32_t k0 = 0; k0 <= n; ++k0) {
+        if (k0 == boundary) continue;
+        const CountingBelow below{boundary};
+        EXPECT_EQ(search_prefix(k0, n, boundary > k0, IndexPredicate(below)), boundary)
+            << "n " << n << ", boundary " << boundary << ", guess " << k0;
+      }
+    }
+  }
+}
+
+TEST(SearchPrefix, EvaluatesOnlyIndicesInsideTheRange) {
+  const std::uint32_t n = 17;
+  for (std::uint32_t boundary = 0; boundary <= n; ++boundary) {
+    for (std::uint32_t k0 = 0; k0 <= n; ++k0) {
+      if (k0 == boundary) continue;
+      const auto below = [&](std::uint32_t k) {
+        EXPECT_LT(k, n);
+        return k < boundary;
+      };
+      EXPECT_EQ(search_prefix(k0, n, boundary > k0, IndexPredicate(below)), boundary);
+    }
+  }
 }
 
 }  // namespace

@@ -5,10 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
 #include <vector>
+
+#include "predicates/grid_search.hpp"
 
 namespace strata {
 namespace {
@@ -84,6 +87,50 @@ TEST(FacetLayerRanges, TiesAreDecidedOnTheDoublePlaneNotOnAnEstimate) {
   const FacetLayerRanges r = facet_layer_ranges(m, g);
   EXPECT_EQ(r.last[0], 2u);
   EXPECT_EQ(r.last[1], 3u);
+}
+
+TEST(FacetLayerRanges, CornersOnAndBesideEveryPlaneCountExactlyWhicheverWayTheGuessRounds) {
+  // dz = 0.1 and z0 = 0.3 are not binary fractions: the first guess (z - z0) / dz + 0.5 rounds to
+  // the wrong layer for some corners on a plane or one ulp beside it, too high for some and too
+  // low for others. The count is the exact one whatever the guess.
+  GridSpec g = four_layers();
+  g.z0 = 0.3;
+  g.dz = 0.1;
+  g.nz = 2000;
+  const double top = g.zk(g.nz - 1) + 1.0;
+  const double bottom = g.z0 - 1.0;
+  std::vector<double> corners;
+  for (std::uint32_t k = 0; k < g.nz; ++k) {
+    for (const double toward : {-1e9, 0.0, 1e9}) {
+      corners.push_back(toward == 0.0 ? g.zk(k) : std::nextafter(g.zk(k), toward));
+    }
+  }
+  std::vector<std::array<double, 3>> heights;
+  for (const double z : corners) {
+    heights.push_back({z, z, top});     // lowest corner z: crosses the planes above z
+    heights.push_back({bottom, z, z});  // highest corner z: crosses the planes up to z
+  }
+  const FacetLayerRanges r = facet_layer_ranges(facets_at_heights(heights), g);
+  int guesses_low = 0;
+  int guesses_high = 0;
+  for (std::size_t c = 0; c < corners.size(); ++c) {
+    const double z = corners[c];
+    std::uint32_t at_or_below = 0;  // planes zk <= z, counted one by one
+    while (at_or_below < g.nz && g.zk(at_or_below) <= z) ++at_or_below;
+    const std::uint32_t guess = detail::clamp_guess((z - g.z0) / g.dz + 0.5, g.nz);
+    guesses_low += guess < at_or_below ? 1 : 0;
+    guesses_high += guess > at_or_below ? 1 : 0;
+    EXPECT_EQ(r.first[2 * c], at_or_below) << "corner " << z;
+    EXPECT_EQ(r.last[2 * c], g.nz - 1) << "corner " << z;
+    if (at_or_below == 0) {
+      EXPECT_TRUE(crosses_none(r, 2 * c + 1)) << "corner " << z;
+    } else {
+      EXPECT_EQ(r.first[2 * c + 1], 0u) << "corner " << z;
+      EXPECT_EQ(r.last[2 * c + 1], at_or_below - 1) << "corner " << z;
+    }
+  }
+  EXPECT_GT(guesses_low, 0) << "no corner whose first guess is too low: the test lost its point";
+  EXPECT_GT(guesses_high, 0) << "no corner whose first guess is too high: the test lost its point";
 }
 
 TEST(BucketFacetsByFirstLayer, GroupsFacetsByTheirFirstLayerInFacetOrder) {
