@@ -13,15 +13,17 @@ if(STRATA_WERROR)
   target_compile_options(strata_settings INTERFACE $<BUILD_INTERFACE:-Werror>)
 endif()
 if(STRATA_SANITIZE)
+  # The sanitizers' compile flags; tests/package compiles the example program with them too.
   set(strata_sanitize_flags -fsanitize=${STRATA_SANITIZE} -fno-omit-frame-pointer
                             -fno-sanitize-recover=all)
+  if(STRATA_SANITIZE_EXCLUDE)
+    list(APPEND strata_sanitize_flags -fno-sanitize=${STRATA_SANITIZE_EXCLUDE})
+  endif()
   target_compile_options(strata_settings INTERFACE "$<BUILD_INTERFACE:${strata_sanitize_flags}>")
   # The link options stay exported: a static library built with sanitizers cannot link without
   # their runtime.
   target_link_options(strata_settings INTERFACE -fsanitize=${STRATA_SANITIZE})
   if(STRATA_SANITIZE_EXCLUDE)
-    target_compile_options(strata_settings INTERFACE
-      $<BUILD_INTERFACE:-fno-sanitize=${STRATA_SANITIZE_EXCLUDE}>)
     target_link_options(strata_settings INTERFACE -fno-sanitize=${STRATA_SANITIZE_EXCLUDE})
   endif()
 endif()
