@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # Installs strata's build dependencies from Debian 12's packages when they are missing, and the
 # view page's packages from package-lock.json (npm ci) when node_modules/ does not match it.
-# Usage: scripts/setup.sh [test | coverage]
+# Usage: scripts/setup.sh [test | coverage | docs]
 #   test: also clang with its sanitizer and libFuzzer runtimes (the `asan` preset the test
 #         command builds), Debian's chromium (the browser tests of the view page) and
 #         assimp-utils (the reference reader of tests/corpus/assimp_agreement_test.cpp)
 #   coverage: the same, and llvm-profdata-14 and llvm-cov-14 (scripts/coverage.sh)
+#   docs: doxygen, for the API documentation (the target strata_docs)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(
   build-essential cmake ninja-build pkg-config
+  help2man dpkg-dev  # the man page from --help; dpkg-shlibdeps for `cpack -G DEB`
   libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev
   libpng-dev zlib1g-dev libfmt-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
@@ -23,6 +25,9 @@ case "${1:-}" in
   coverage)
     # The profile runtime is in libclang-rt-14-dev too; the tools that read profiles in llvm-14.
     packages+=(llvm-14 python3)
+    ;;
+  docs)
+    packages+=(doxygen)
     ;;
 esac
 # Node.js bundles the view page at build time; a machine that has a node already keeps it.

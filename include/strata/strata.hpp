@@ -41,7 +41,7 @@
 /// @endcode
 ///
 /// Every function returns Result<T>: a value or an Error{code, message, location} saying what
-/// was wrong; nothing prints or exits. The modules behind these calls (include/strata/<module>/)
+/// was wrong; nothing prints or exits. The modules behind these calls (`include/strata/<module>/`)
 /// offer the rest: the exact path (exact/slice_exact.hpp), other outputs (export/), repair
 /// (repair/), validation of the fast path against the exact one (validate/).
 

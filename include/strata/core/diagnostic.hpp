@@ -5,6 +5,7 @@
 
 namespace strata {
 
+/// How much a Diagnostic matters: a note, or a warning about the input or the result.
 enum class Severity { Info, Warning };
 
 /// Usable-but-odd input, or something a stage did that the user should know about. Diagnostics
@@ -15,6 +16,7 @@ struct Diagnostic {
   std::string message;  ///< what a person reads, naming the file and the line or facet
 };
 
+/// The diagnostics of a result, in the order they arose.
 using Diagnostics = std::vector<Diagnostic>;
 
 }  // namespace strata

@@ -41,6 +41,7 @@ struct Occurrences {
   std::size_t count = 0;
   std::vector<Location> locations;
 
+  /// True when nothing was found.
   bool empty() const { return count == 0; }
 };
 

@@ -18,7 +18,9 @@ class OutputFile {
  public:
   OutputFile() = default;
   ~OutputFile();
+  /// Takes over `other`'s temporary file; `other` is left holding none.
   OutputFile(OutputFile&& other) noexcept;
+  /// Removes this file's uncommitted temporary, then takes over `other`'s.
   OutputFile& operator=(OutputFile&& other) noexcept;
   OutputFile(const OutputFile&) = delete;
   OutputFile& operator=(const OutputFile&) = delete;

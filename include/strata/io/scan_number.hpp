@@ -43,6 +43,7 @@ struct ScannedNumber {
   NumberFault fault = NumberFault::None;
   NumberType type = NumberType::Float64;
 
+  /// True when the token was a number of the type (no fault).
   bool ok() const { return fault == NumberFault::None; }
 };
 
@@ -70,7 +71,7 @@ ScannedNumber<std::uint64_t> scan_unsigned(std::string_view token, NumberType ty
 
 /// The one message for a refused token, e.g. "bad number '1e999': too large for a double",
 /// "bad number '+-1': not a number", "bad number 'nan': not a number (inf and nan are not
-/// accepted)". Control bytes of the token are shown as \xNN and a long token is cut short.
+/// accepted)". Control bytes of the token are shown as `\xNN` and a long token is cut short.
 std::string bad_number_message(std::string_view token, NumberFault fault, NumberType type);
 
 /// Error{BadInput, bad_number_message(...), location}; `location` names the file and line

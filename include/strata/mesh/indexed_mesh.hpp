@@ -8,7 +8,9 @@
 
 namespace strata {
 
+/// A vertex of IndexedMesh::vertices.
 using VertexIndex = std::uint32_t;
+/// A facet, counted from 0 in the input's order.
 using FacetIndex = std::uint32_t;
 
 /// Vertices shared by exact equality of their coordinates, and triangles indexing them.
@@ -17,8 +19,10 @@ struct IndexedMesh {
   std::vector<Vec3> vertices;
   std::vector<std::array<VertexIndex, 3>> triangles;
 
+  /// Corner c (0, 1 or 2) of facet f.
   const Vec3& corner(FacetIndex f, int c) const { return vertices[triangles[f][c]]; }
 
+  /// The bounding box of the vertices (empty for a mesh without vertices).
   Bbox3 bounds() const {
     Bbox3 box;
     for (const auto& v : vertices) box.add(v);

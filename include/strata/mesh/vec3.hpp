@@ -10,6 +10,7 @@ struct Vec3 {
   double y = 0.0;
   double z = 0.0;
 
+  /// Exact equality of the coordinates.
   friend bool operator==(const Vec3&, const Vec3&) = default;
 };
 
@@ -18,6 +19,7 @@ struct Point2 {
   double x = 0.0;
   double y = 0.0;
 
+  /// Exact equality of the coordinates.
   friend bool operator==(const Point2&, const Point2&) = default;
 };
 
@@ -27,7 +29,9 @@ struct Bbox3 {
   Vec3 min{kInf, kInf, kInf};
   Vec3 max{-kInf, -kInf, -kInf};
 
+  /// True until a point is added.
   bool empty() const { return !(min.x <= max.x); }
+  /// Grows the box to contain `p`.
   void add(const Vec3& p) {
     if (p.x < min.x) min.x = p.x;
     if (p.y < min.y) min.y = p.y;

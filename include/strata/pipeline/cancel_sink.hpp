@@ -15,6 +15,7 @@ inline constexpr const char* kCancelledMessage = "cancelled";
 /// @param cancel  raised by another thread; must outlive the sink
 class CancelSink final : public LayerSink {
  public:
+  /// Watches `cancel`.
   explicit CancelSink(const std::atomic<bool>& cancel) : cancel_(cancel) {}
   Result<void> begin(const SliceRunInfo& run) override;
   Result<void> add_layer(const LayerResult& layer) override;

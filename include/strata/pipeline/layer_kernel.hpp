@@ -22,7 +22,9 @@ struct LayerGeometry {
 class LayerKernel {
  public:
   virtual ~LayerKernel() = default;
+  /// Prepares the layers [k0, k1) (e.g. groups the facets that cross them); one thread.
   virtual void prepare_batch(std::uint32_t k0, std::uint32_t k1) = 0;
+  /// Contours, segments and the solid bitmap of layer k of the prepared batch; thread-safe.
   virtual LayerGeometry compute_layer(std::uint32_t k) const = 0;
   /// How failure messages name the kernel: "fast path", "exact path".
   virtual std::string_view name() const { return "layer kernel"; }

@@ -24,8 +24,8 @@ struct SliceRunInfo {
 /// One finished layer, handed to the sinks in increasing k. The references live until
 /// add_layer returns.
 struct LayerResult {
-  std::uint32_t layer = 0;
-  double z_mm = 0.0;
+  std::uint32_t layer = 0;  ///< k
+  double z_mm = 0.0;        ///< the cutting plane, GridSpec::zk(k)
   /// nx * ny, row-major (j * nx + i); empty when no sink needs cells (LayerSink::needs_cells).
   const std::vector<CellClass>& cells;
   const LayerContours& contours;
@@ -38,9 +38,13 @@ struct LayerResult {
 class LayerSink {
  public:
   virtual ~LayerSink() = default;
+  /// Called once before the first layer: open the output (under a temporary name) for `run`.
   virtual Result<void> begin(const SliceRunInfo& run) = 0;
+  /// Called for every layer, k = 0 .. nz-1 in order; an error stops the run.
   virtual Result<void> add_layer(const LayerResult& layer) = 0;
+  /// Called once after the last layer: complete the output (rename it into place).
   virtual Result<void> finish() = 0;
+  /// Called instead of finish() when the run fails anywhere: remove what was written.
   virtual void abort() noexcept = 0;
   /// Whether add_layer reads LayerResult::cells. When no sink does and the options allow it
   /// (SliceOptions::always_classify false), the engine skips the shell and the classification

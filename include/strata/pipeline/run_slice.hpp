@@ -43,8 +43,9 @@ struct OpenChainReport {
   std::uint32_t segments = 0;
 };
 
+/// What a slice run made: counts by class, volumes, contour figures, per-layer statistics.
 struct SliceSummary {
-  GridSpec grid;
+  GridSpec grid;  ///< the grid sliced
   /// False when no sink needed cells and SliceOptions::always_classify was off: the class counts
   /// and the solid volume are then 0, the contours and segments as always.
   bool cells_classified = true;

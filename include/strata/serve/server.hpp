@@ -10,8 +10,10 @@
 
 namespace strata::serve {
 
+/// The default of ServerOptions::max_upload_bytes (`strata serve --max-upload`, 1000 MB).
 inline constexpr std::uint64_t kDefaultMaxUploadBytes = 1'000'000'000;
 
+/// Where and how Server::start listens, and its limits.
 struct ServerOptions {
   std::string bind_address = "127.0.0.1";  ///< loopback unless the user asks otherwise
   std::uint16_t port = 8080;               ///< 0: any free port (see Server::port())

@@ -21,8 +21,9 @@ enum class TaskKind {
 struct TaskRequest {
   TaskKind kind = TaskKind::Check;
   std::filesystem::path model;  ///< the job's model file
-  /// Slice: the folder the outputs go to (absent before): <stem>.cells, <stem>.cli, <stem>.json
-  /// (the report), <stem>.html (the page), view.json (the page's data, web/DATA.md), png/, svg/.
+  /// Slice: the folder the outputs go to (absent before): `<stem>.cells`, `<stem>.cli`,
+  /// `<stem>.json` (the report), `<stem>.html` (the page), `view.json` (the page's data,
+  /// web/DATA.md), `png/`, `svg/`.
   std::filesystem::path output_dir;
   std::string stem;          ///< the outputs' stem (the model's file name without extensions)
   std::string options_json;  ///< Slice, Validate: the page's parameters, a JSON object
@@ -44,6 +45,7 @@ inline std::filesystem::path model_view_path(const TaskRequest& request) {
   return request.output_dir.parent_path() / "model-view.json";
 }
 
+/// Runs one task (the command line's implementation, so the server holds no slicing code).
 using TaskRunner = std::function<Result<std::string>(const TaskRequest&, const TaskControl&)>;
 
 }  // namespace strata::serve

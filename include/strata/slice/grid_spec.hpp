@@ -11,9 +11,9 @@ namespace strata {
 /// The regular grid of SPEC §2. Every quantity is computed in IEEE double exactly as written
 /// (the build disables contraction), so any two implementations get the same bits.
 struct GridSpec {
-  double x0 = 0, y0 = 0, z0 = 0;
-  double dx = 1, dy = 1, dz = 1;
-  std::uint32_t nx = 1, ny = 1, nz = 1;
+  double x0 = 0, y0 = 0, z0 = 0;         ///< origin: the grid's minimum corner, mm
+  double dx = 1, dy = 1, dz = 1;         ///< cell size and layer thickness, mm
+  std::uint32_t nx = 1, ny = 1, nz = 1;  ///< cells along x and y, layers along z
 
   /// Cell centre x of column i: x0 + (i + 0.5) * dx.
   double xc(std::uint32_t i) const { return x0 + (static_cast<double>(i) + 0.5) * dx; }
@@ -22,7 +22,9 @@ struct GridSpec {
   /// Cutting plane of layer k: z0 + (k + 0.5) * dz.
   double zk(std::uint32_t k) const { return z0 + (static_cast<double>(k) + 0.5) * dz; }
 
+  /// nx * ny.
   std::uint64_t cells_per_layer() const { return std::uint64_t{nx} * ny; }
+  /// nx * ny * nz.
   std::uint64_t cell_count() const { return cells_per_layer() * nz; }
 };
 

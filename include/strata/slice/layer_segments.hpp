@@ -15,6 +15,7 @@ struct CrossedEdge {
   VertexIndex below = 0;
   VertexIndex above = 0;
 
+  /// Exact equality of the two vertex indices.
   friend bool operator==(const CrossedEdge&, const CrossedEdge&) = default;
 };
 

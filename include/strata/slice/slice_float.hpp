@@ -28,6 +28,8 @@ struct FacetBuckets {
   std::vector<FacetIndex> facets;      ///< facets starting in layer k: [offsets[k], offsets[k+1])
 };
 
+/// Groups the facets by ranges.first (each bucket in increasing facet order), leaving out those
+/// that cross no layer.
 FacetBuckets bucket_facets_by_first_layer(const FacetLayerRanges& ranges, std::uint32_t nz);
 
 /// Cuts the candidate facets with plane z = grid.zk(layer). A facet yields one segment when its

@@ -49,7 +49,9 @@ struct SliceOptions {
   bool always_classify = true;
 };
 
+/// The command line's name of a fill rule: "nonzero", "evenodd", "winding".
 const char* to_string(FillRule rule);
+/// The command line's name of a shell mode: "distance", "layers".
 const char* to_string(ShellMode mode);
 
 }  // namespace strata

@@ -211,6 +211,7 @@ struct ReferenceLayerComparison {
   bool differs_from_exact = false;
   bool differs_from_fast = false;
 
+  /// True when some mesh vertex lies exactly on the layer's plane.
   bool vertex_on_plane() const { return vertices_on_plane > 0; }
 };
 
@@ -280,6 +281,7 @@ struct ReferenceSlicerFigures {
   double build_seconds = 0.0;  ///< checking the mesh, building the Surface_mesh and AABB tree
   double slice_seconds = 0.0;  ///< slicing every layer and rounding the points
   double compare_seconds = 0.0;
+  /// Build, slice and compare time together.
   double seconds() const { return build_seconds + slice_seconds + compare_seconds; }
 
   std::vector<ReferenceLayerComparison> layers;  ///< the compared layers, in order

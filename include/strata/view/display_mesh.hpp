@@ -17,6 +17,7 @@ struct DisplayMesh {
   std::size_t facets_in_model = 0;
   bool simplified = false;
 
+  /// Triangles drawn.
   std::size_t facets() const { return indices.size() / 3; }
 };
 

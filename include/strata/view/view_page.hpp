@@ -20,7 +20,7 @@ struct ViewPage {
   std::string source_kind;  ///< "model" or "folder"
   std::string source_path;
   std::vector<std::string> notes;  ///< shown at the top of the page
-  std::string report_json;         ///< the slice report (<stem>.json); empty when there is none
+  std::string report_json;         ///< the slice report (`<stem>.json`); empty when there is none
   std::optional<DisplayMesh> mesh;
   std::optional<diagnose::MeshReport> check;
   /// The model's mesh, to draw the facets that `check` names; may be null (then only its edge

@@ -42,6 +42,7 @@ struct ViewStack {
 /// The page's default budget for its layers, in bytes of page text.
 inline constexpr std::uint64_t kDefaultViewBudgetBytes = std::uint64_t{200} << 20;
 
+/// What ViewStackCollector keeps of each layer.
 struct ViewStackOptions {
   bool hatches = true;             ///< keep the scanline segments
   bool contours = true;            ///< keep the contours (a cells file alone has none)
@@ -52,6 +53,7 @@ struct ViewStackOptions {
 /// run has finished.
 class ViewStackCollector final : public LayerSink {
  public:
+  /// Keeps what `options` asks for.
   explicit ViewStackCollector(ViewStackOptions options = {});
 
   Result<void> begin(const SliceRunInfo& run) override;

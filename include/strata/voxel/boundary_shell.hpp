@@ -26,6 +26,7 @@ using SolidLayerLookup = std::function<const std::uint8_t*(std::int64_t k)>;
 /// The mesh and grid must outlive the marker. classify() is safe to call from several threads.
 class BoundaryShell {
  public:
+  /// Prepares the marker of a shell `thickness_mm` thick (Distance mode: sorts the facets by z).
   BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, ShellMode mode, double thickness_mm);
 
   /// How many layers on each side of k classify(k) reads.

@@ -54,13 +54,16 @@ class WindingNumberTree {
  public:
   static constexpr double kDefaultBeta = 2.0;
 
+  /// Builds the hierarchy over `triangles` (each a facet's corners, in its orientation).
   explicit WindingNumberTree(std::vector<std::array<Vec3, 3>> triangles);
 
   /// The hierarchical approximation of the winding number at q.
   double evaluate(const Vec3& q, double beta = kDefaultBeta) const;
   /// The direct sum over every facet (the reference the approximation is measured against).
   double evaluate_direct(const Vec3& q) const;
+  /// Facets in the hierarchy.
   std::size_t facet_count() const { return triangles_.size(); }
+  /// True without facets (the winding number is then 0 everywhere).
   bool empty() const { return triangles_.empty(); }
 
  private:
