@@ -243,9 +243,11 @@ describe('strata serve', { skip: cli ? false : 'STRATA_CLI is not set' }, () => 
     const { context, page } = await openApp();
     await upload(page, ring);
     await page.waitForSelector('[data-testid="verdict"]');
-    // Many cheap layers (5000 of 800 x 800 cells): the first ones come quickly even under the
-    // sanitizers, the whole job takes minutes.
-    await setOptions(page, { layer: 0.002, cell: 0.05, shell: 0.05 });
+    // Many cheap layers (10000 of 200 x 200 cells, a shell that reaches 10 layers): under the
+    // sanitizers the first ones come within a second or two, the whole job takes a minute or more.
+    // (800 x 800 cells a layer and a shell reaching 25 layers once took over 2 minutes to the
+    // first layer under the sanitizers beside the other tests.)
+    await setOptions(page, { layer: 0.001, cell: 0.2, shell: 0.01 });
     await page.click('[data-testid="slice"]');
     const id = await page.evaluate(() => window.strataServe.selected());
     await page.waitForFunction(() => (window.strataServe.job()?.slice.done ?? 0) > 0, null, { timeout: 120_000 });
