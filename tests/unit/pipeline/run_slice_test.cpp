@@ -9,8 +9,8 @@
 #include <string>
 
 #include "../slice/box_mesh_for_tests.hpp"
-#include "collecting_sink_for_tests.hpp"
 #include "strata/slicer/slice_model.hpp"
+#include "support/collecting_sink.hpp"
 
 namespace strata {
 namespace {

@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include "../pipeline/collecting_sink_for_tests.hpp"
 #include "../slice/box_mesh_for_tests.hpp"
 #include "strata/pipeline/cancel_sink.hpp"
+#include "support/collecting_sink.hpp"
 
 namespace strata {
 namespace {
