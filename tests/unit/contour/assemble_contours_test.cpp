@@ -6,10 +6,10 @@
 #include <numeric>
 #include <vector>
 
-#include "../slice/box_mesh_for_tests.hpp"
 #include "strata/io/read_mesh.hpp"
 #include "strata/mesh/weld_vertices.hpp"
 #include "strata/slice/slice_float.hpp"
+#include "support/mesh_builders.hpp"
 
 namespace strata {
 namespace {
@@ -26,8 +26,8 @@ LayerSegments cut(const IndexedMesh& mesh, double z) {
 }
 
 IndexedMesh two_boxes(Vec3 lo_a, Vec3 hi_a, Vec3 lo_b, Vec3 hi_b) {
-  IndexedMesh m = testing::indexed_box(lo_a, hi_a);
-  testing::append_mesh(m, testing::indexed_box(lo_b, hi_b));
+  IndexedMesh m = test::indexed_box_lo_hi_diagonals(lo_a, hi_a);
+  test::append_mesh(m, test::indexed_box_lo_hi_diagonals(lo_b, hi_b));
   return m;
 }
 

@@ -9,11 +9,15 @@
 
 #include "strata/core/error.hpp"
 #include "strata/mesh/weld_vertices.hpp"
+#include "support/mesh_builders.hpp"
 
 namespace strata::diagnose {
 namespace {
 
-using Triangle = std::array<Vec3, 3>;
+using Triangle = test::Facet;
+using test::box_facets_lo_hi_diagonals;
+using test::joined;
+using test::reversed;
 
 Vec3 cross_of(const Triangle& t) {
   const Vec3 u{t[1].x - t[0].x, t[1].y - t[0].y, t[1].z - t[0].z};
@@ -30,32 +34,7 @@ TriangleSoup soup_of(const std::vector<Triangle>& triangles) {
   return soup;
 }
 
-/// The 12 outward-facing facets of the box [lo, hi].
-std::vector<Triangle> box(Vec3 lo, Vec3 hi) {
-  std::array<Vec3, 8> v;
-  for (int i = 0; i < 8; ++i) {
-    v[i] = {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
-  }
-  constexpr int kFacets[12][3] = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-                                  {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
-  std::vector<Triangle> out;
-  for (const auto& f : kFacets) out.push_back({v[f[0]], v[f[1]], v[f[2]]});
-  return out;
-}
-
-std::vector<Triangle> unit_box() { return box({0, 0, 0}, {1, 1, 1}); }
-
-Triangle reversed(const Triangle& t) { return {t[0], t[2], t[1]}; }
-
-std::vector<Triangle> reversed(std::vector<Triangle> ts) {
-  for (Triangle& t : ts) t = reversed(t);
-  return ts;
-}
-
-std::vector<Triangle> joined(std::vector<Triangle> a, const std::vector<Triangle>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
+std::vector<Triangle> unit_box() { return box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1}); }
 
 MeshReport diagnose(const TriangleSoup& soup, const DiagnoseOptions& options = {}) {
   return diagnose_mesh(weld_vertices(soup), soup, options);
@@ -91,7 +70,8 @@ TEST(DiagnoseMesh, ClosedBoxHasNoDefects) {
 }
 
 TEST(DiagnoseMesh, BoxVolumeAndAreaAreExact) {
-  const MeshReport r = diagnose(box({-1.5, 0.25, 2.0}, {2.5, 3.75, 10.0}));  // 4 x 3.5 x 8
+  const MeshReport r =
+      diagnose(box_facets_lo_hi_diagonals({-1.5, 0.25, 2.0}, {2.5, 3.75, 10.0}));  // 4 x 3.5 x 8
   EXPECT_EQ(r.volume_mm3, 112.0);
   EXPECT_EQ(r.shells[0].signed_volume_mm3, 112.0);
   EXPECT_DOUBLE_EQ(r.surface_area_mm2, 2.0 * (4.0 * 3.5 + 3.5 * 8.0 + 8.0 * 4.0));
@@ -103,7 +83,8 @@ TEST(DiagnoseMesh, VolumeFarFromOriginIsExact) {
   // Far from the origin the tetrahedra cancel to 1e-24 of their size: a double sum loses the
   // volume, the exact sum keeps it.
   const double far = 1e8;
-  const MeshReport r = diagnose(box({far, far, far}, {far + 0.5, far + 0.25, far + 2.0}));
+  const MeshReport r =
+      diagnose(box_facets_lo_hi_diagonals({far, far, far}, {far + 0.5, far + 0.25, far + 2.0}));
   EXPECT_EQ(r.volume_mm3, 0.25);
 }
 
@@ -146,7 +127,8 @@ TEST(DiagnoseMesh, TwoHolesMakeTwoLoops) {
 }
 
 TEST(DiagnoseMesh, BoxesSharingAnEdgeHaveOneNonManifoldEdge) {
-  const MeshReport r = diagnose(joined(unit_box(), box({1, 1, 0}, {2, 2, 1})));
+  const MeshReport r =
+      diagnose(joined(unit_box(), box_facets_lo_hi_diagonals({1, 1, 0}, {2, 2, 1})));
   EXPECT_EQ(r.non_manifold_edges.count, 1U);
   ASSERT_EQ(r.non_manifold_edges.locations.size(), 1U);
   const EdgeLocation& e = r.non_manifold_edges.locations[0];
@@ -162,7 +144,8 @@ TEST(DiagnoseMesh, BoxesSharingAnEdgeHaveOneNonManifoldEdge) {
 }
 
 TEST(DiagnoseMesh, BoxesSharingAVertexHaveOneNonManifoldVertex) {
-  const MeshReport r = diagnose(joined(unit_box(), box({1, 1, 1}, {2, 2, 2})));
+  const MeshReport r =
+      diagnose(joined(unit_box(), box_facets_lo_hi_diagonals({1, 1, 1}, {2, 2, 2})));
   EXPECT_EQ(r.non_manifold_edges.count, 0U);
   ASSERT_EQ(r.non_manifold_vertices.count, 1U);
   EXPECT_EQ(r.non_manifold_vertices.locations[0], (Vec3{1, 1, 1}));
@@ -310,8 +293,8 @@ TEST(DiagnoseMesh, InvertedBoxIsAnInvertedShell) {
 }
 
 TEST(DiagnoseMesh, InnerWallOfHollowBoxIsACavityNotInverted) {
-  const MeshReport r =
-      diagnose(joined(box({0, 0, 0}, {4, 4, 4}), reversed(box({1, 1, 1}, {3, 3, 3}))));
+  const MeshReport r = diagnose(joined(box_facets_lo_hi_diagonals({0, 0, 0}, {4, 4, 4}),
+                                       reversed(box_facets_lo_hi_diagonals({1, 1, 1}, {3, 3, 3}))));
   ASSERT_EQ(r.shells.size(), 2U);
   EXPECT_TRUE(r.shells[1].is_cavity);
   EXPECT_FALSE(r.shells[1].is_inverted);
@@ -321,7 +304,8 @@ TEST(DiagnoseMesh, InnerWallOfHollowBoxIsACavityNotInverted) {
 }
 
 TEST(DiagnoseMesh, OverlappingBoxesSelfIntersect) {
-  const MeshReport r = diagnose(joined(unit_box(), box({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5})));
+  const MeshReport r =
+      diagnose(joined(unit_box(), box_facets_lo_hi_diagonals({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5})));
   EXPECT_GT(r.self_intersections.count, 0U);
   EXPECT_FALSE(r.self_intersections_truncated);
   for (const FacetPair& p : r.self_intersections.locations) {
@@ -334,15 +318,17 @@ TEST(DiagnoseMesh, OverlappingBoxesSelfIntersect) {
 }
 
 TEST(DiagnoseMesh, SelfIntersectionSearchStopsAtItsLimit) {
-  const MeshReport r = diagnose(joined(unit_box(), box({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5})),
-                                DiagnoseOptions{.max_self_intersection_pairs = 2});
+  const MeshReport r =
+      diagnose(joined(unit_box(), box_facets_lo_hi_diagonals({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5})),
+               DiagnoseOptions{.max_self_intersection_pairs = 2});
   EXPECT_EQ(r.self_intersections.count, 2U);
   EXPECT_TRUE(r.self_intersections_truncated);
 }
 
 TEST(DiagnoseMesh, SelfIntersectionSearchCanBeSwitchedOff) {
-  const MeshReport r = diagnose(joined(unit_box(), box({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5})),
-                                DiagnoseOptions{.check_self_intersections = false});
+  const MeshReport r =
+      diagnose(joined(unit_box(), box_facets_lo_hi_diagonals({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5})),
+               DiagnoseOptions{.check_self_intersections = false});
   EXPECT_FALSE(r.self_intersections_checked);
   EXPECT_EQ(r.self_intersections.count, 0U);
 }

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "support/mesh_builders.hpp"
+
 namespace strata::diagnose::detail {
 namespace {
 
@@ -34,24 +36,14 @@ TEST(NormalAgreementSign, SurvivesCancellationThatFoolsDouble) {
   EXPECT_EQ(normal_agreement_sign(n, a, b, c), -1);
 }
 
-IndexedMesh unit_box_at(double x0, double y0, double z0, double size) {
-  IndexedMesh mesh;
-  for (int i = 0; i < 8; ++i) {
-    mesh.vertices.push_back(
-        {x0 + ((i & 1) ? size : 0.0), y0 + ((i & 2) ? size : 0.0), z0 + ((i & 4) ? size : 0.0)});
-  }
-  mesh.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-                    {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
-  return mesh;
+/// The cube of edge `size` with its lowest corner at (x0, y0, z0).
+IndexedMesh cube_at(double x0, double y0, double z0, double size) {
+  return test::indexed_box_lo_hi_diagonals({x0, y0, z0}, {x0 + size, y0 + size, z0 + size});
 }
 
 TEST(ExactSignedVolumes, SumsEachGroup) {
-  IndexedMesh mesh = unit_box_at(0, 0, 0, 1);
-  const IndexedMesh big = unit_box_at(5, 5, 5, 2);
-  for (const auto& t : big.triangles) {
-    mesh.triangles.push_back({t[0] + 8, t[1] + 8, t[2] + 8});
-  }
-  mesh.vertices.insert(mesh.vertices.end(), big.vertices.begin(), big.vertices.end());
+  IndexedMesh mesh = cube_at(0, 0, 0, 1);
+  test::append_mesh(mesh, cube_at(5, 5, 5, 2));
   std::vector<std::uint32_t> group(24, 0);
   for (int f = 12; f < 24; ++f) group[f] = 1;
   const ExactVolumes v = exact_signed_volumes(mesh, group, 2);
@@ -63,13 +55,13 @@ TEST(ExactSignedVolumes, SumsEachGroup) {
 
 TEST(ExactSignedVolumes, StaysExactFarFromTheOrigin) {
   // The tetrahedra are of order 1e45 and cancel to 1.
-  const IndexedMesh mesh = unit_box_at(1e15, -1e15, 3e15, 1);
+  const IndexedMesh mesh = cube_at(1e15, -1e15, 3e15, 1);
   const ExactVolumes v = exact_signed_volumes(mesh, std::vector<std::uint32_t>(12, 0), 1);
   EXPECT_EQ(v.total_mm3, 1.0);
 }
 
 TEST(ExactSignedVolumes, MixesTinyAndHugeCoordinates) {
-  const IndexedMesh mesh = unit_box_at(-0x1p-60, 0x1p+20, 0.0, 0x1p-30);
+  const IndexedMesh mesh = cube_at(-0x1p-60, 0x1p+20, 0.0, 0x1p-30);
   const ExactVolumes v = exact_signed_volumes(mesh, std::vector<std::uint32_t>(12, 0), 1);
   EXPECT_EQ(v.total_mm3, 0x1p-90);
 }

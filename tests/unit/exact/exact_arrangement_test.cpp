@@ -11,9 +11,9 @@ namespace strata {
 namespace {
 
 using exact::detail::ContourMethod;
-using exact_test::append;
-using exact_test::box;
 using exact_test::run_exact_with;
+using test::append_mesh;
+using test::indexed_box_lo_hi_diagonals;
 
 exact_test::Run slice_on_arrangement(const IndexedMesh& mesh, FillRule rule) {
   SliceOptions o;
@@ -25,8 +25,8 @@ exact_test::Run slice_on_arrangement(const IndexedMesh& mesh, FillRule rule) {
 }
 
 IndexedMesh overlapping_squares() {
-  IndexedMesh m = box({0, 0, 0}, {4, 4, 2});
-  append(m, box({2, 2, 0}, {6, 6, 2}));
+  IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 4, 2});
+  append_mesh(m, indexed_box_lo_hi_diagonals({2, 2, 0}, {6, 6, 2}));
   return m;
 }
 
@@ -80,7 +80,7 @@ TEST(ExactArrangement, FrameGivesAnOuterLoopAndAClockwiseHole) {
 
 TEST(ExactArrangement, NestedFrameInsideAFrameUnderEvenOddStaysSeparate) {
   IndexedMesh m = exact_test::frame({0, 0}, {12, 12}, {2, 2}, {10, 10}, 0, 2);
-  append(m, box({4, 4, 0}, {8, 8, 2}));  // an island in the hole
+  append_mesh(m, indexed_box_lo_hi_diagonals({4, 4, 0}, {8, 8, 2}));  // an island in the hole
   const auto r = slice_on_arrangement(m, FillRule::EvenOdd);
   ASSERT_TRUE(r.ok);
   for (const LayerContours& c : r.sink.contours) {
@@ -94,8 +94,8 @@ TEST(ExactArrangement, NestedFrameInsideAFrameUnderEvenOddStaysSeparate) {
 }
 
 TEST(ExactArrangement, BoxesMeetingAlongPartOfAWallMergeAcrossTheTJunction) {
-  IndexedMesh m = box({0, 0, 0}, {2, 2, 1});
-  append(m, box({2, 0, 0}, {4, 1, 1}));
+  IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {2, 2, 1});
+  append_mesh(m, indexed_box_lo_hi_diagonals({2, 0, 0}, {4, 1, 1}));
   const auto r = slice_on_arrangement(m, FillRule::NonZero);
   ASSERT_TRUE(r.ok);
   const LayerContours& c = r.sink.contours[0];
@@ -107,10 +107,10 @@ TEST(ExactArrangement, BoxesMeetingAlongPartOfAWallMergeAcrossTheTJunction) {
 TEST(ExactArrangement, DuplicateOppositeFacetsCancel) {
   // A second copy of the whole box, turned inside out: every wall is walked both ways, so the
   // winding is 0 everywhere and there is no contour (and no solid cell).
-  IndexedMesh m = box({0, 0, 0}, {3, 3, 1});
-  IndexedMesh flipped = box({0, 0, 0}, {3, 3, 1});
+  IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {3, 3, 1});
+  IndexedMesh flipped = indexed_box_lo_hi_diagonals({0, 0, 0}, {3, 3, 1});
   for (auto& t : flipped.triangles) std::swap(t[1], t[2]);
-  append(m, flipped);
+  append_mesh(m, flipped);
   const auto r = slice_on_arrangement(m, FillRule::NonZero);
   ASSERT_TRUE(r.ok);
   EXPECT_TRUE(r.sink.contours[0].loops.empty());
@@ -120,7 +120,7 @@ TEST(ExactArrangement, DuplicateOppositeFacetsCancel) {
 TEST(ExactArrangement, OpenChainsAreCountedAndTheRegionExtendsToTheGridEdge) {
   // Without one triangle of its +x wall, a row through the gap has only the -x wall to cross:
   // centres left of the box wind -1 (solid), centres inside wind 0 (empty).
-  IndexedMesh m = box({0, 0, 0}, {4, 3, 3});
+  IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 3, 3});
   m.triangles.erase(m.triangles.begin() + 10);
   SliceOptions o;
   o.grid = GridOptions{1.0, 1.0, 1.0, Vec3{-2, 0, 0}};

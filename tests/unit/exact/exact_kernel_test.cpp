@@ -13,6 +13,9 @@
 namespace strata::exact_test {
 namespace {
 
+using test::append_mesh;
+using test::indexed_box_lo_hi_diagonals;
+
 SliceOptions options_with(FillRule rule) {
   SliceOptions o;
   o.grid = GridOptions{1.0, 1.0, 1.0, std::nullopt};
@@ -51,8 +54,8 @@ void expect_same_closed_loops(const LayerContours& a, const LayerContours& b) {
 }
 
 IndexedMesh overlapping_boxes() {
-  IndexedMesh m = box({0, 0, 0}, {10, 10, 4});
-  append(m, box({5, 5, 0}, {15, 15, 4}));
+  IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {10, 10, 4});
+  append_mesh(m, indexed_box_lo_hi_diagonals({5, 5, 0}, {15, 15, 4}));
   return m;
 }
 
@@ -103,8 +106,8 @@ TEST(ExactKernelOutline, CrossingDiagnosticNamesTheFirstLayers) {
 }
 
 TEST(ExactKernelOutline, BoxesSharingAnEdgeTouchAndGiveTheirOutline) {
-  IndexedMesh m = box({0, 0, 0}, {2, 2, 2});
-  append(m, box({2, 2, 0}, {4, 4, 2}));
+  IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {2, 2, 2});
+  append_mesh(m, indexed_box_lo_hi_diagonals({2, 2, 0}, {4, 4, 2}));
   for (const IndexedMesh& mesh : {m, welded(m)}) {
     const BothKernels r = run_both(mesh, FillRule::NonZero);
     ASSERT_TRUE(r.fast.ok && r.exact.ok);
@@ -119,8 +122,8 @@ TEST(ExactKernelOutline, BoxesSharingAnEdgeTouchAndGiveTheirOutline) {
 }
 
 TEST(ExactKernelOutline, BoxesSharingAFaceGiveOneRectangle) {
-  IndexedMesh m = box({0, 0, 0}, {2, 3, 2});
-  append(m, box({2, 0, 0}, {5, 3, 2}));
+  IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {2, 3, 2});
+  append_mesh(m, indexed_box_lo_hi_diagonals({2, 0, 0}, {5, 3, 2}));
   const BothKernels r = run_both(m, FillRule::NonZero);
   ASSERT_TRUE(r.fast.ok && r.exact.ok);
   for (std::uint32_t k = 0; k < 2; ++k) {
@@ -133,8 +136,9 @@ TEST(ExactKernelOutline, BoxesSharingAFaceGiveOneRectangle) {
 }
 
 IndexedMesh nested_boxes() {
-  IndexedMesh m = box({0, 0, 0}, {10, 10, 3});
-  append(m, box({3, 3, 0}, {5, 5, 3}));  // inside, facing out too: winding 2
+  IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {10, 10, 3});
+  append_mesh(
+      m, indexed_box_lo_hi_diagonals({3, 3, 0}, {5, 5, 3}));  // inside, facing out too: winding 2
   return m;
 }
 
@@ -191,7 +195,7 @@ TEST(ExactKernelOutline, RingLayersStaySimpleAndChained) {
 }
 
 TEST(ExactKernelOutline, OpenChainsAreStillReportedOnOutlineLayers) {
-  IndexedMesh m = box({0, 0, 0}, {4, 3, 3});
+  IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 3, 3});
   m.triangles.erase(m.triangles.begin() + 10, m.triangles.end());  // the +x face removed
   const BothKernels r = run_both(m, FillRule::NonZero);
   ASSERT_TRUE(r.fast.ok && r.exact.ok);

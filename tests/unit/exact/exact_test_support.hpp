@@ -20,6 +20,7 @@
 #include "strata/mesh/weld_vertices.hpp"
 #include "strata/pipeline/layer_sink.hpp"
 #include "strata/slicer/slice_model.hpp"
+#include "support/mesh_builders.hpp"
 
 namespace strata::exact_test {
 
@@ -107,28 +108,6 @@ inline void add_quad(IndexedMesh& m, VertexIndex a, VertexIndex b, VertexIndex c
   // (a, b, c, d) counter-clockwise seen from outside.
   m.triangles.push_back({a, b, c});
   m.triangles.push_back({a, c, d});
-}
-
-/// An outward-oriented closed box, 8 vertices, 12 triangles.
-inline IndexedMesh box(Vec3 lo, Vec3 hi) {
-  IndexedMesh m;
-  for (int c = 0; c < 8; ++c) {
-    m.vertices.push_back({(c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z});
-  }
-  add_quad(m, 0, 2, 3, 1);  // bottom, -z
-  add_quad(m, 4, 5, 7, 6);  // top, +z
-  add_quad(m, 0, 1, 5, 4);  // -y
-  add_quad(m, 2, 6, 7, 3);  // +y
-  add_quad(m, 0, 4, 6, 2);  // -x
-  add_quad(m, 1, 3, 7, 5);  // +x
-  return m;
-}
-
-/// Appends another mesh (no welding: equal positions stay separate vertices).
-inline void append(IndexedMesh& to, const IndexedMesh& from) {
-  const auto base = static_cast<VertexIndex>(to.vertices.size());
-  to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
-  for (auto t : from.triangles) to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
 }
 
 /// Welds exactly equal positions (through the project's weld_vertices).

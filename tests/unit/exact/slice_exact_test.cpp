@@ -17,8 +17,6 @@
 namespace strata {
 namespace {
 
-using exact_test::append;
-using exact_test::box;
 using exact_test::frame;
 using exact_test::octahedron;
 using exact_test::perturbed_sphere;
@@ -26,6 +24,8 @@ using exact_test::run_exact;
 using exact_test::run_exact_with;
 using exact_test::run_fast;
 using exact_test::welded;
+using test::append_mesh;
+using test::indexed_box_lo_hi_diagonals;
 
 /// A convex prism: the counter-clockwise polygon `base` extruded from z0 to z1, closed, outward.
 IndexedMesh prism(const std::vector<std::array<double, 2>>& base, double z0, double z1) {
@@ -64,11 +64,11 @@ void PrintTo(const Model& model, std::ostream* os) { *os << model.name; }
 
 std::vector<Model> models() {
   std::vector<Model> out;
-  out.push_back({"box", [] { return box({0, 0, 0}, {6, 5, 7}); }});
+  out.push_back({"box", [] { return indexed_box_lo_hi_diagonals({0, 0, 0}, {6, 5, 7}); }});
   out.push_back({"tetrahedron", [] { return weld_vertices(mesh::make_tetrahedron()); }});
   out.push_back({"overlapping_boxes", [] {
-                   IndexedMesh m = box({0, 0, 0}, {4, 4, 3});
-                   append(m, box({2, 2, 1}, {6, 6, 4}));
+                   IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 4, 3});
+                   append_mesh(m, indexed_box_lo_hi_diagonals({2, 2, 1}, {6, 6, 4}));
                    return m;
                  }});
   out.push_back({"frame", [] { return frame({0, 0}, {10, 8}, {3, 2}, {7, 5}, 0, 3); }});
@@ -77,7 +77,7 @@ std::vector<Model> models() {
                  1.0, Vec3{0, 0, 0}});
   out.push_back({"walls_through_centres",
                  [] {
-                   return box({0.5, 0.5, 0.5}, {3.5, 2.5, 2.5});
+                   return indexed_box_lo_hi_diagonals({0.5, 0.5, 0.5}, {3.5, 2.5, 2.5});
                  },
                  1.0, Vec3{0, 0, 0}});
   out.push_back({"faces_on_scanlines",
@@ -91,25 +91,25 @@ std::vector<Model> models() {
                  },
                  1.0, Vec3{0, 0, 0}});
   out.push_back({"open_box_top", [] {
-                   IndexedMesh m = box({0, 0, 0}, {4, 3, 3});
+                   IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 3, 3});
                    m.triangles.erase(m.triangles.begin() + 2, m.triangles.begin() + 4);
                    return m;
                  }});
   out.push_back({"open_box_side",
                  [] {
-                   IndexedMesh m = box({0, 0, 0}, {4, 3, 3});
+                   IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 3, 3});
                    m.triangles.erase(m.triangles.begin() + 10);
                    return m;
                  },
                  1.0, std::nullopt, false});
   out.push_back({"shared_edge", [] {
-                   IndexedMesh m = box({0, 0, 0}, {2, 2, 2});
-                   append(m, box({2, 2, 0}, {4, 4, 2}));
+                   IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {2, 2, 2});
+                   append_mesh(m, indexed_box_lo_hi_diagonals({2, 2, 0}, {4, 4, 2}));
                    return welded(m);
                  }});
   out.push_back({"duplicate_facets",
                  [] {
-                   IndexedMesh m = box({0, 0, 0}, {4, 3, 3});
+                   IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 3, 3});
                    m.triangles.push_back(m.triangles[10]);
                    const auto t = m.triangles[4];
                    m.triangles.push_back({t[0], t[2], t[1]});
@@ -117,7 +117,7 @@ std::vector<Model> models() {
                  },
                  1.0, std::nullopt, false});
   out.push_back({"zero_area_facets", [] {
-                   IndexedMesh m = box({0, 0, 0}, {4, 3, 3});
+                   IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 3, 3});
                    m.triangles.push_back({0, 0, 4});  // a repeated corner on a box edge
                    const auto v = static_cast<VertexIndex>(m.vertices.size());
                    m.vertices.push_back({1, 1, 0.2});  // three points on a vertical line
@@ -269,7 +269,7 @@ Result<GridSpec> unit_grid(const IndexedMesh& mesh) {
 }
 
 TEST(ExactSliceReport, ClosedBoxIsChainedThroughTheHalfedgeStructure) {
-  const IndexedMesh mesh = box({0, 0, 0}, {4, 3, 5});
+  const IndexedMesh mesh = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 3, 5});
   const auto r = run_exact(mesh, *unit_grid(mesh), unit_options());
   ASSERT_TRUE(r.ok);
   EXPECT_TRUE(r.report.polygon_mesh);
@@ -286,8 +286,8 @@ TEST(ExactSliceReport, ClosedBoxIsChainedThroughTheHalfedgeStructure) {
 }
 
 TEST(ExactSliceReport, SharedEdgeIsSplitByOrientation) {
-  IndexedMesh m = box({0, 0, 0}, {2, 2, 2});
-  append(m, box({2, 2, 0}, {4, 4, 2}));
+  IndexedMesh m = indexed_box_lo_hi_diagonals({0, 0, 0}, {2, 2, 2});
+  append_mesh(m, indexed_box_lo_hi_diagonals({2, 2, 0}, {4, 4, 2}));
   const IndexedMesh mesh = welded(m);
   const auto r = run_exact(mesh, *unit_grid(mesh), unit_options());
   ASSERT_TRUE(r.ok);
@@ -300,8 +300,8 @@ TEST(ExactSliceReport, SharedEdgeIsSplitByOrientation) {
 }
 
 TEST(ExactSliceReport, OverlappingShellsAreOutlinedWhereTheirLoopsCross) {
-  IndexedMesh mesh = box({0, 0, 0}, {4, 4, 3});
-  append(mesh, box({2, 2, 1}, {6, 6, 4}));
+  IndexedMesh mesh = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 4, 3});
+  append_mesh(mesh, indexed_box_lo_hi_diagonals({2, 2, 1}, {6, 6, 4}));
   const auto r = run_exact(mesh, *unit_grid(mesh), unit_options());
   ASSERT_TRUE(r.ok);
   EXPECT_EQ(r.report.halfedge_layers, 2u);  // layers 0 and 3 hold one box each
@@ -311,7 +311,7 @@ TEST(ExactSliceReport, OverlappingShellsAreOutlinedWhereTheirLoopsCross) {
 }
 
 TEST(ExactSliceReport, DuplicateFacetsAreRemovedAndTheirLayersUseTheArrangement) {
-  IndexedMesh mesh = box({0, 0, 0}, {4, 3, 3});
+  IndexedMesh mesh = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 3, 3});
   mesh.triangles.push_back(mesh.triangles[10]);
   const auto r = run_exact(mesh, *unit_grid(mesh), unit_options());
   ASSERT_TRUE(r.ok);
@@ -324,7 +324,7 @@ TEST(ExactSliceReport, DuplicateFacetsAreRemovedAndTheirLayersUseTheArrangement)
 }
 
 TEST(ExactSliceReport, RepeatedCornerFacetIsRemovedWithoutLeavingTheHalfedgePath) {
-  IndexedMesh mesh = box({0, 0, 0}, {4, 3, 3});
+  IndexedMesh mesh = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 3, 3});
   mesh.triangles.push_back({0, 0, 4});
   const auto r = run_exact(mesh, *unit_grid(mesh), unit_options());
   ASSERT_TRUE(r.ok);
@@ -351,7 +351,7 @@ TEST(ExactSliceReport, ASoupOfNeedlesLeavesNoPolygonMeshAndSaysSo) {
 
 TEST(ExactSliceReport, UnweldedCopiesAreMerged) {
   IndexedMesh mesh;
-  const IndexedMesh b = box({0, 0, 0}, {2, 2, 2});
+  const IndexedMesh b = indexed_box_lo_hi_diagonals({0, 0, 0}, {2, 2, 2});
   for (const auto& t : b.triangles) {  // every facet with its own three vertices
     const auto v = static_cast<VertexIndex>(mesh.vertices.size());
     for (const VertexIndex c : t) mesh.vertices.push_back(b.vertices[c]);
@@ -370,7 +370,7 @@ TEST(ExactSliceReport, UnweldedCopiesAreMerged) {
 // --- orientation and hatches ---------------------------------------------------------------------
 
 TEST(ExactSliceContours, InsideOutBoxIsOutlinedAsTheRegionNonzeroFillsLikeTheFastPath) {
-  IndexedMesh mesh = box({0, 0, 0}, {4, 3, 2});
+  IndexedMesh mesh = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 3, 2});
   for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
   const auto exact = run_exact(mesh, *unit_grid(mesh), unit_options());
   const auto fast = run_fast(mesh, *unit_grid(mesh), unit_options());
@@ -404,7 +404,7 @@ TEST(ExactSliceContours, FrameHasAnOuterLoopAndANestedHole) {
 }
 
 TEST(ExactSliceFill, HatchesRunBetweenTheWalls) {
-  const IndexedMesh mesh = box({0.25, 0.5, 0}, {5.75, 2.5, 1});
+  const IndexedMesh mesh = indexed_box_lo_hi_diagonals({0.25, 0.5, 0}, {5.75, 2.5, 1});
   SliceOptions o = unit_options();
   o.grid.origin = Vec3{0, 0, 0};
   const auto r = run_exact(mesh, *make_grid(mesh.bounds(), o.grid), o);
@@ -449,7 +449,7 @@ TEST(ExactSliceFill, CrossingsAreRoundedOnceToTheNearestDouble) {
 // ---------------------------------------------------------------------------------------
 
 TEST(ExactSliceErrors, WindingRuleIsAUsageError) {
-  const IndexedMesh mesh = box({0, 0, 0}, {1, 1, 1});
+  const IndexedMesh mesh = indexed_box_lo_hi_diagonals({0, 0, 0}, {1, 1, 1});
   SliceOptions o = unit_options();
   o.fill_rule = FillRule::Winding;
   exact_test::LayerCollector sink;
@@ -460,7 +460,7 @@ TEST(ExactSliceErrors, WindingRuleIsAUsageError) {
 }
 
 TEST(ExactSliceErrors, NonFiniteCoordinateIsBadInput) {
-  IndexedMesh mesh = box({0, 0, 0}, {1, 1, 1});
+  IndexedMesh mesh = indexed_box_lo_hi_diagonals({0, 0, 0}, {1, 1, 1});
   const GridSpec grid = *unit_grid(mesh);
   mesh.vertices[3].y = std::numeric_limits<double>::quiet_NaN();
   exact_test::LayerCollector sink;
@@ -473,7 +473,7 @@ TEST(ExactSliceErrors, NonFiniteCoordinateIsBadInput) {
 }
 
 TEST(ExactSliceErrors, VertexIndexOutOfRangeIsBadInput) {
-  IndexedMesh mesh = box({0, 0, 0}, {1, 1, 1});
+  IndexedMesh mesh = indexed_box_lo_hi_diagonals({0, 0, 0}, {1, 1, 1});
   const GridSpec grid = *unit_grid(mesh);
   mesh.triangles[5][1] = 99;
   exact_test::LayerCollector sink;
@@ -486,7 +486,7 @@ TEST(ExactSliceErrors, VertexIndexOutOfRangeIsBadInput) {
 
 TEST(ExactSliceErrors, NonFiniteCoordinateOnAnyAxisIsBadInput) {
   for (int axis = 0; axis < 3; ++axis) {
-    IndexedMesh mesh = box({0, 0, 0}, {1, 1, 1});
+    IndexedMesh mesh = indexed_box_lo_hi_diagonals({0, 0, 0}, {1, 1, 1});
     const GridSpec grid = *unit_grid(mesh);
     Vec3& v = mesh.vertices[0];
     v = {0, 0, 0};
@@ -522,7 +522,7 @@ class ThrowingSink final : public LayerSink {
 };
 
 TEST(ExactSliceErrors, AFailureInASinkIsAnInternalErrorOfTheExactPath) {
-  const IndexedMesh mesh = box({0, 0, 0}, {4, 3, 5});
+  const IndexedMesh mesh = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 3, 5});
   ThrowingSink failing([] { throw std::runtime_error("disk full"); });
   exact_test::LayerCollector other;
   LayerSink* sinks[] = {&failing, &other};
@@ -536,7 +536,7 @@ TEST(ExactSliceErrors, AFailureInASinkIsAnInternalErrorOfTheExactPath) {
 }
 
 TEST(ExactSliceErrors, RunningOutOfMemoryIsAnInternalErrorOfTheExactPath) {
-  const IndexedMesh mesh = box({0, 0, 0}, {4, 3, 5});
+  const IndexedMesh mesh = indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 3, 5});
   ThrowingSink failing([] { throw std::bad_alloc(); });
   LayerSink* sinks[] = {&failing};
   auto r = slice_model_exact(mesh, *unit_grid(mesh), unit_options(), sinks);

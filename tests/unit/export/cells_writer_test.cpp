@@ -7,17 +7,18 @@
 #include <string>
 #include <vector>
 
-#include "export_test_support.hpp"
 #include "strata/io/read_cells.hpp"
+#include "support/sink_runs.hpp"
+#include "support/text_meshes.hpp"
 
 namespace strata::io {
 namespace {
 
+using test::read_file;
 using testing::code;
 using testing::codes;
 using testing::LayerData;
 using testing::list_tree;
-using testing::read_file_bytes;
 using testing::run_sink;
 using testing::ScratchDir;
 using testing::small_layers;
@@ -43,16 +44,15 @@ std::string packed_single_layer(const ScratchDir& dir, std::uint32_t nx, std::ui
   auto sink = make_cells_writer(dir / "one.cells");
   LayerData layer;
   layer.cells = cells;
-  auto ok = run_sink(*sink, flat_run(nx, ny), {layer});
-  EXPECT_TRUE(ok) << ok.error().to_string();
-  return read_file_bytes(dir / "one.cells").substr(kCellsHeaderBytes);
+  return testing::run_and_read(*sink, flat_run(nx, ny), {layer}, dir / "one.cells")
+      .substr(kCellsHeaderBytes);
 }
 
 TEST(CellsWriter, BinaryHeaderIsTheSpecLayoutLittleEndian) {
   ScratchDir dir;
   auto sink = make_cells_writer(dir / "part.cells", CellsEncoding::Binary);
   ASSERT_TRUE(run_sink(*sink, small_run(), small_layers()));
-  const std::string file = read_file_bytes(dir / "part.cells");
+  const std::string file = read_file(dir / "part.cells");
   ASSERT_GE(file.size(), 80u);
   const std::string expected = bytes({
       'S', 'T', 'R', 'C', 'E', 'L', 'L',  '1',               // magic
@@ -73,7 +73,7 @@ TEST(CellsWriter, BinaryLayersArePackedAndPaddedPerLayer) {
   ScratchDir dir;
   auto sink = make_cells_writer(dir / "part.cells");
   ASSERT_TRUE(run_sink(*sink, small_run(), small_layers()));
-  const std::string file = read_file_bytes(dir / "part.cells");
+  const std::string file = read_file(dir / "part.cells");
   // 15 cells a layer: ceil(15 / 4) = 4 bytes, the last holding 3 cells and 2 zero padding bits
   // (padding the rows instead would take 3 x 2 = 6 bytes).
   ASSERT_EQ(file.size(), 80u + 2 * 4);
@@ -99,7 +99,7 @@ TEST(CellsWriter, AsciiFileHasTheSpecLines) {
   ScratchDir dir;
   auto sink = make_cells_writer(dir / "part.cells.txt", CellsEncoding::Ascii);
   ASSERT_TRUE(run_sink(*sink, small_run(), small_layers()));
-  EXPECT_EQ(read_file_bytes(dir / "part.cells.txt"),
+  EXPECT_EQ(read_file(dir / "part.cells.txt"),
             "strata-cells 1\n"
             "grid 5 3 2\n"
             "origin -1.5 2.25 0.125\n"
@@ -126,7 +126,7 @@ TEST(CellsWriter, AsciiNumbersReadBackToTheSameBits) {
   LayerData layer;
   layer.cells = codes({0});
   ASSERT_TRUE(run_sink(*sink, run, {layer}));
-  const auto lines = testing::lines_of(read_file_bytes(dir / "n.cells.txt"));
+  const auto lines = testing::lines_of(read_file(dir / "n.cells.txt"));
   ASSERT_GE(lines.size(), 4u);
   double x0 = 0, y0 = 0, z0 = 0, dx = 0;
   ASSERT_EQ(std::sscanf(lines[2].c_str(), "origin %lf %lf %lf", &x0, &y0, &z0), 3);
@@ -283,7 +283,7 @@ TEST(CellsWriter, DestroyingAnUnfinishedSinkLeavesNothing) {
 
 TEST(CellsWriter, UnwritableTargetIsBadInput) {
   ScratchDir dir;
-  testing::write_file_bytes(dir / "file", "x");
+  test::write_text_file(dir / "file", "x");
   auto sink = make_cells_writer(dir / "file" / "part.cells");
   auto begun = sink->begin(small_run());
   ASSERT_FALSE(begun);
@@ -312,7 +312,7 @@ TEST(CellsWriter, RewritesEveryConformanceVectorByteForByte) {
     }
     auto sink = make_cells_writer(dir / "again.cells");
     ASSERT_TRUE(run_sink(*sink, run, layers));
-    EXPECT_EQ(read_file_bytes(dir / "again.cells"), read_file_bytes(entry.path()));
+    EXPECT_EQ(read_file(dir / "again.cells"), read_file(entry.path()));
     ++checked;
   }
   EXPECT_EQ(checked, 7);

@@ -10,28 +10,21 @@
 #include <string>
 #include <vector>
 
-#include "export_test_support.hpp"
+#include "support/sink_runs.hpp"
 
 namespace strata::io {
 namespace {
 
+using test::read_file;
 using testing::count_of;
 using testing::LayerData;
 using testing::lines_of;
 using testing::list_tree;
-using testing::read_file_bytes;
+using testing::loop;
 using testing::run_sink;
 using testing::ScratchDir;
 using testing::small_layers;
 using testing::small_run;
-
-Contour loop(std::vector<Point2> points, LoopKind kind) {
-  Contour c;
-  c.points = std::move(points);
-  c.is_closed = kind != LoopKind::Open;
-  c.kind = kind;
-  return c;
-}
 
 /// Layer 1 of small_run() gets a hole, an outer loop, an open chain and two hatch segments.
 std::vector<LayerData> layers_with_contours() {
@@ -49,9 +42,7 @@ std::vector<LayerData> layers_with_contours() {
 std::string write_cli(const ScratchDir& dir, CliEncoding encoding,
                       const SliceRunInfo& run = small_run()) {
   auto sink = make_cli_writer(dir / "part.cli", encoding);
-  auto ok = run_sink(*sink, run, layers_with_contours());
-  EXPECT_TRUE(ok) << ok.error().to_string();
-  return read_file_bytes(dir / "part.cli");
+  return testing::run_and_read(*sink, run, layers_with_contours(), dir / "part.cli");
 }
 
 /// The values of every `$$KEY/...` line, split at commas.
@@ -137,7 +128,7 @@ TEST(CliWriter, AsciiCoordinatesKeepFullPrecision) {
   layers[0].contours.loops.push_back(loop({{x, y}, {1.0, y}, {1.0, 1.0}}, LoopKind::Outer));
   auto sink = make_cli_writer(dir / "p.cli", CliEncoding::Ascii);
   ASSERT_TRUE(run_sink(*sink, small_run(), layers));
-  const auto polylines = commands(read_file_bytes(dir / "p.cli"), "POLYLINE");
+  const auto polylines = commands(read_file(dir / "p.cli"), "POLYLINE");
   ASSERT_EQ(polylines.size(), 1u);
   EXPECT_EQ(std::strtod(polylines[0][3].c_str(), nullptr), x);
   EXPECT_EQ(std::strtod(polylines[0][4].c_str(), nullptr), y);
@@ -147,7 +138,7 @@ TEST(CliWriter, EmptyModelStillHasEveryLayer) {
   ScratchDir dir;
   auto sink = make_cli_writer(dir / "e.cli", CliEncoding::Ascii);
   ASSERT_TRUE(run_sink(*sink, small_run(), small_layers()));
-  const std::string text = read_file_bytes(dir / "e.cli");
+  const std::string text = read_file(dir / "e.cli");
   EXPECT_EQ(count_of(text, "$$LAYER/"), 2u);
   EXPECT_EQ(count_of(text, "$$POLYLINE/"), 0u);
   EXPECT_EQ(count_of(text, "$$HATCHES/"), 0u);
@@ -161,7 +152,7 @@ TEST(CliWriter, AClosedLoopOfTheOpenKindIsWrittenAsAnOpenPolyline) {
   layers[0].contours.loops.push_back(chain);
   auto sink = make_cli_writer(dir / "part.cli", CliEncoding::Ascii);
   ASSERT_TRUE(run_sink(*sink, small_run(), layers));
-  const auto polylines = commands(read_file_bytes(dir / "part.cli"), "POLYLINE");
+  const auto polylines = commands(read_file(dir / "part.cli"), "POLYLINE");
   ASSERT_EQ(polylines.size(), 1u);
   EXPECT_EQ(polylines[0],
             (std::vector<std::string>{"1", "2", "3", "0", "2.5", "0.5", "2.5", "0.5", "3"}));
@@ -191,7 +182,7 @@ TEST(CliWriter, AsciiLayersLongerThanTheWriteBufferAreWhole) {
   for (int h = 0; h < 5000; ++h) layers[0].hatches.push_back({1, -1.0, 0.5});
   auto sink = make_cli_writer(dir / "part.cli", CliEncoding::Ascii);
   ASSERT_TRUE(run_sink(*sink, small_run(), layers));
-  const std::string text = read_file_bytes(dir / "part.cli");
+  const std::string text = read_file(dir / "part.cli");
   const auto polylines = commands(text, "POLYLINE");
   ASSERT_EQ(polylines.size(), 1u);
   ASSERT_EQ(polylines[0].size(), 3 + 2 * 20001u);
@@ -321,7 +312,7 @@ TEST(CliWriter, BinaryLayersLongerThanTheWriteBufferAreWhole) {
   for (int h = 0; h < 5000; ++h) layers[0].hatches.push_back({1, -1.0, 0.5});
   auto sink = make_cli_writer(dir / "part.cli", CliEncoding::Binary);
   ASSERT_TRUE(run_sink(*sink, small_run(), layers));
-  const std::string file = read_file_bytes(dir / "part.cli");
+  const std::string file = read_file(dir / "part.cli");
   const std::size_t start = file.find("$$HEADEREND") + 11;
   // layer (2 + 4), polyline (2 + 12 + 8 a point), hatches (2 + 8 + 16 a segment), layer (2 + 4).
   EXPECT_EQ(file.size() - start, 6 + (14 + 8 * 20001) + (10 + 16 * 5000) + 6);

@@ -9,18 +9,18 @@
 #include <utility>
 #include <vector>
 
-#include "export_test_support.hpp"
+#include "support/sink_runs.hpp"
+#include "support/text_meshes.hpp"
 
 namespace strata::io {
 namespace {
 
+using test::read_file;
 using testing::list_tree;
-using testing::read_file_bytes;
 using testing::run_sink;
 using testing::ScratchDir;
 using testing::small_layers;
 using testing::small_run;
-using testing::write_file_bytes;
 
 struct GreyImage {
   std::uint32_t width = 0;
@@ -64,7 +64,7 @@ TEST(PngStackWriter, ImageIsEightBitGreyOfTheGridSize) {
   ScratchDir dir;
   auto sink = make_png_stack_writer(dir.path(), "part");
   ASSERT_TRUE(run_sink(*sink, small_run(), small_layers()));
-  const std::string file = read_file_bytes(dir / "png/part_00000.png");
+  const std::string file = read_file(dir / "png/part_00000.png");
   ASSERT_GT(file.size(), 26u);
   // IHDR: width and height big-endian at 16 and 20, bit depth at 24, colour type at 25.
   EXPECT_EQ(file.substr(12, 4), "IHDR");
@@ -114,7 +114,7 @@ TEST(PngStackWriter, StoresThePixelPitch) {
   ScratchDir dir;
   auto sink = make_png_stack_writer(dir.path(), "part");
   ASSERT_TRUE(run_sink(*sink, small_run(), small_layers()));
-  const std::string file = read_file_bytes(dir / "png/part_00000.png");
+  const std::string file = read_file(dir / "png/part_00000.png");
   const auto at = file.find("pHYs");
   ASSERT_NE(at, std::string::npos);
   auto be32 = [&](std::size_t offset) {
@@ -140,7 +140,7 @@ TEST(PngStackWriter, AbortRemovesEarlierLayersAndTheFoldersItCreated) {
 TEST(PngStackWriter, AbortLeavesForeignFilesAndTheirFolder) {
   ScratchDir dir;
   std::filesystem::create_directory(dir / "png");
-  write_file_bytes(dir / "png/notes.txt", "mine");
+  test::write_text_file(dir / "png/notes.txt", "mine");
   auto sink = make_png_stack_writer(dir.path(), "part");
   ASSERT_TRUE(run_sink(*sink, small_run(), small_layers()));
   sink->abort();
@@ -156,10 +156,10 @@ TEST(PngStackWriter, DestroyingAnUnfinishedSinkLeavesNothing) {
 TEST(PngStackWriter, FinishRemovesStaleLayersOfALongerEarlierRun) {
   ScratchDir dir;
   std::filesystem::create_directory(dir / "png");
-  write_file_bytes(dir / "png/part_00002.png", "old");
-  write_file_bytes(dir / "png/part_00007.png", "old");
-  write_file_bytes(dir / "png/other_00009.png", "other stem");
-  write_file_bytes(dir / "png/part_final.png", "not a layer");
+  test::write_text_file(dir / "png/part_00002.png", "old");
+  test::write_text_file(dir / "png/part_00007.png", "old");
+  test::write_text_file(dir / "png/other_00009.png", "other stem");
+  test::write_text_file(dir / "png/part_final.png", "not a layer");
   auto sink = make_png_stack_writer(dir.path(), "part");
   ASSERT_TRUE(run_sink(*sink, small_run(), small_layers()));
   EXPECT_EQ(list_tree(dir.path()),
@@ -190,7 +190,7 @@ TEST(PngStackWriter, NoPixelPitchWhenACellSizeDoesNotFitThePngChunk) {
     run.grid.dy = dy;
     auto sink = make_png_stack_writer(dir.path(), "part");
     ASSERT_TRUE(run_sink(*sink, run, small_layers()));
-    const std::string file = read_file_bytes(dir / "png/part_00000.png");
+    const std::string file = read_file(dir / "png/part_00000.png");
     EXPECT_EQ(file.find("pHYs"), std::string::npos) << dx << " x " << dy;
     const GreyImage image = decode_png(dir / "png/part_00000.png");
     EXPECT_EQ(image.width, 5u);

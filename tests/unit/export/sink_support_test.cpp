@@ -7,19 +7,19 @@
 #include <string>
 #include <vector>
 
-#include "export_test_support.hpp"
 #include "strata/export/cells_writer.hpp"
 #include "strata/export/svg_writer.hpp"
 #include "support/file_size_limit.hpp"
+#include "support/sink_runs.hpp"
+#include "support/text_meshes.hpp"
 
 namespace strata::io {
 namespace {
 
-using testing::read_file_bytes;
+using test::read_file;
 using testing::ScratchDir;
 using testing::small_layers;
 using testing::small_run;
-using testing::write_file_bytes;
 
 void expect_internal(const Result<void>& r, const std::string& message) {
   ASSERT_FALSE(r.has_value()) << "expected: " << message;
@@ -97,14 +97,14 @@ TEST(SinkContract, CreatesMissingOutputFoldersAndRemovesThemOnAbort) {
 
 TEST(SinkContract, FileWhereAnOutputFolderShouldBeIsBadInput) {
   ScratchDir dir;
-  write_file_bytes(dir / "a", "not a folder");
+  test::write_text_file(dir / "a", "not a folder");
   auto sink = make_cells_writer(dir / "a" / "b" / "part.cells");
   const Result<void> r = sink->begin(small_run());
   ASSERT_FALSE(r.has_value());
   EXPECT_EQ(r.error().code, ErrorCode::BadInput);
   EXPECT_EQ(r.error().location, (dir / "a").string());
   EXPECT_EQ(r.error().message, "cannot create the output folder: a file of that name exists");
-  EXPECT_EQ(read_file_bytes(dir / "a"), "not a folder");
+  EXPECT_EQ(read_file(dir / "a"), "not a folder");
 }
 
 TEST(SinkContract, FinishRemovesOnlyTheStemsNumberedLayerFilesBeyondTheGrid) {
@@ -114,8 +114,8 @@ TEST(SinkContract, FinishRemovesOnlyTheStemsNumberedLayerFilesBeyondTheGrid) {
                                          "part_1.svg",     "part_0000x.svg", "part_000-1.svg"};
   const std::vector<std::string> stale = {"part_00002.svg", "part_00009.svg",
                                           "part_99999999999999999999999.svg"};
-  for (const auto& name : kept) write_file_bytes(dir / "svg" / name, "x");
-  for (const auto& name : stale) write_file_bytes(dir / "svg" / name, "x");
+  for (const auto& name : kept) test::write_text_file(dir / "svg" / name, "x");
+  for (const auto& name : stale) test::write_text_file(dir / "svg" / name, "x");
   auto sink = make_svg_writer(dir.path(), "part");
   ASSERT_TRUE(testing::run_sink(*sink, small_run(), small_layers()));
   for (const auto& name : kept) EXPECT_TRUE(std::filesystem::exists(dir / "svg" / name)) << name;

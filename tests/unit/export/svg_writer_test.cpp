@@ -9,28 +9,20 @@
 #include <string>
 #include <vector>
 
-#include "export_test_support.hpp"
+#include "support/sink_runs.hpp"
 
 namespace strata::io {
 namespace {
 
+using test::read_file;
 using testing::count_of;
 using testing::LayerData;
 using testing::list_tree;
-using testing::read_file_bytes;
+using testing::loop;
 using testing::run_sink;
 using testing::ScratchDir;
 using testing::small_layers;
 using testing::small_run;
-
-Contour loop(std::vector<Point2> points, LoopKind kind, int depth) {
-  Contour c;
-  c.points = std::move(points);
-  c.is_closed = kind != LoopKind::Open;
-  c.kind = kind;
-  c.depth = depth;
-  return c;
-}
 
 /// Layer 1 of small_run() gets: a hole (depth 1) listed before its outer loop, a second outer
 /// loop inside the hole, an open chain, and two hatch segments.
@@ -49,9 +41,7 @@ std::vector<LayerData> layers_with_contours() {
 
 std::string write_layers(const ScratchDir& dir, const SliceRunInfo& run) {
   auto sink = make_svg_writer(dir.path(), "part");
-  auto ok = run_sink(*sink, run, layers_with_contours());
-  EXPECT_TRUE(ok) << ok.error().to_string();
-  return read_file_bytes(dir / "svg/part_00001.svg");
+  return testing::run_and_read(*sink, run, layers_with_contours(), dir / "svg/part_00001.svg");
 }
 
 TEST(SvgWriter, WritesOneFileALayerWithFiveDigitIndex) {
@@ -75,7 +65,7 @@ TEST(SvgWriter, DrawsOnePathPerLoopAndOneForTheHatches) {
 TEST(SvgWriter, EmptyLayerHasNoPaths) {
   ScratchDir dir;
   write_layers(dir, small_run());
-  const std::string svg = read_file_bytes(dir / "svg/part_00000.svg");
+  const std::string svg = read_file(dir / "svg/part_00000.svg");
   EXPECT_EQ(count_of(svg, "<path "), 0u);
   EXPECT_EQ(count_of(svg, "</svg>"), 1u);
 }
@@ -143,7 +133,7 @@ TEST(SvgWriter, TitleEscapesTheMarkupCharactersOfTheStem) {
   ScratchDir dir;
   auto sink = make_svg_writer(dir.path(), "a&b<c>\"d'e");
   ASSERT_TRUE(run_sink(*sink, small_run(), layers_with_contours()));
-  const std::string svg = read_file_bytes(dir / "svg/a&b<c>\"d'e_00000.svg");
+  const std::string svg = read_file(dir / "svg/a&b<c>\"d'e_00000.svg");
   EXPECT_NE(svg.find("<title>a&amp;b&lt;c&gt;&quot;d&apos;e layer 0 z=0.625 mm</title>"),
             std::string::npos)
       << svg;
@@ -187,7 +177,7 @@ TEST(SvgWriter, ALoopWithoutPointsIsNotDrawn) {
   layers[0].contours.loops.push_back(loop({}, LoopKind::Outer, 0));
   auto sink = make_svg_writer(dir.path(), "part");
   ASSERT_TRUE(run_sink(*sink, small_run(), layers));
-  EXPECT_EQ(count_of(read_file_bytes(dir / "svg/part_00000.svg"), "<path "), 0u);
+  EXPECT_EQ(count_of(read_file(dir / "svg/part_00000.svg"), "<path "), 0u);
 }
 
 TEST(SvgWriter, AClosedLoopOfTheOpenKindIsDrawnAsAnOpenChain) {
@@ -198,7 +188,7 @@ TEST(SvgWriter, AClosedLoopOfTheOpenKindIsDrawnAsAnOpenChain) {
   layers[0].contours.loops.push_back(chain);
   auto sink = make_svg_writer(dir.path(), "part");
   ASSERT_TRUE(run_sink(*sink, small_run(), layers));
-  const std::string svg = read_file_bytes(dir / "svg/part_00000.svg");
+  const std::string svg = read_file(dir / "svg/part_00000.svg");
   EXPECT_NE(svg.find("<path class=\"open\" d=\"M 0 -2.5 L 0.5 -2.5 L 0.5 -3\"/>"),
             std::string::npos)
       << svg;
@@ -213,7 +203,7 @@ TEST(SvgWriter, HatchesLongerThanTheWriteBufferAreAllDrawn) {
     layers[0].hatches.push_back({static_cast<std::uint32_t>(h % 3), -1.25, 0.75});
   auto sink = make_svg_writer(dir.path(), "part");
   ASSERT_TRUE(run_sink(*sink, small_run(), layers));
-  const std::string svg = read_file_bytes(dir / "svg/part_00000.svg");
+  const std::string svg = read_file(dir / "svg/part_00000.svg");
   EXPECT_EQ(count_of(svg, "<path class=\"hatch\""), 1u);
   EXPECT_EQ(count_of(svg, " H 0.75"), 6000u);
   const double y2 = small_run().grid.yc(2);

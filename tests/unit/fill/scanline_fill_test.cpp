@@ -4,8 +4,8 @@
 
 #include <numeric>
 
-#include "../slice/box_mesh_for_tests.hpp"
 #include "strata/slice/slice_float.hpp"
+#include "support/mesh_builders.hpp"
 
 namespace strata {
 namespace {
@@ -29,7 +29,7 @@ int count_solid(const LayerFill& fill) {
 }
 
 TEST(ScanlineFill, BoxAlignedWithGridFillsItsCells) {
-  const IndexedMesh box = testing::indexed_box({1, 1, 1}, {4, 3, 5});
+  const IndexedMesh box = test::indexed_box_lo_hi_diagonals({1, 1, 1}, {4, 3, 5});
   const GridSpec grid = unit_grid(6);
   for (std::uint32_t k = 0; k < 6; ++k) {
     const LayerFill fill = fill_layer(box, grid, k);
@@ -48,7 +48,7 @@ TEST(ScanlineFill, BoxAlignedWithGridFillsItsCells) {
 
 TEST(ScanlineFill, WallThroughCellCentreTakesMaterialOnPlusXSide) {
   // Walls at x = 1.5 and x = 3.5 pass exactly through cell centres of columns 1 and 3.
-  const IndexedMesh box = testing::indexed_box({1.5, 0, 0}, {3.5, 1, 1});
+  const IndexedMesh box = test::indexed_box_lo_hi_diagonals({1.5, 0, 0}, {3.5, 1, 1});
   const LayerFill fill = fill_layer(box, unit_grid(5), 0);
   // Column 1's centre lies on the left wall: material is on its +x side, so it is solid; column
   // 3's centre lies on the right wall with empty space on +x, so it is empty.
@@ -59,7 +59,7 @@ TEST(ScanlineFill, WallThroughCellCentreTakesMaterialOnPlusXSide) {
 
 TEST(ScanlineFill, FaceOnScanlineTakesMaterialBelowInY) {
   // The box's faces y = 0.5 and y = 2.5 lie exactly on the scanlines of rows 0 and 2.
-  const IndexedMesh box = testing::indexed_box({0, 0.5, 0}, {1, 2.5, 1});
+  const IndexedMesh box = test::indexed_box_lo_hi_diagonals({0, 0.5, 0}, {1, 2.5, 1});
   const LayerFill fill = fill_layer(box, unit_grid(4), 0);
   // A point on the line counts as above: row 0 (on the lower face) is empty, row 2 (on the
   // upper face) takes the material below it.
@@ -70,8 +70,8 @@ TEST(ScanlineFill, FaceOnScanlineTakesMaterialBelowInY) {
 }
 
 TEST(ScanlineFill, OverlappingBoxesDifferBetweenNonZeroAndEvenOdd) {
-  IndexedMesh two = testing::indexed_box({0, 0, 0}, {3, 1, 1});
-  testing::append_mesh(two, testing::indexed_box({1, 0, 0}, {4, 1, 1}));
+  IndexedMesh two = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {3, 1, 1});
+  test::append_mesh(two, test::indexed_box_lo_hi_diagonals({1, 0, 0}, {4, 1, 1}));
   const GridSpec grid = unit_grid(4);
   const LayerFill nonzero = fill_layer(two, grid, 0, FillRule::NonZero);
   const LayerFill evenodd = fill_layer(two, grid, 0, FillRule::EvenOdd);
@@ -84,7 +84,7 @@ TEST(ScanlineFill, OverlappingBoxesDifferBetweenNonZeroAndEvenOdd) {
 }
 
 TEST(ScanlineFill, HatchesCoverTheSolidSpanOfEachRow) {
-  const IndexedMesh box = testing::indexed_box({0.25, 0, 0}, {2.75, 2, 1});
+  const IndexedMesh box = test::indexed_box_lo_hi_diagonals({0.25, 0, 0}, {2.75, 2, 1});
   const LayerFill fill = fill_layer(box, unit_grid(3), 0);
   ASSERT_EQ(fill.hatches.size(), 2u);
   EXPECT_EQ(fill.hatches[0].row, 0u);
@@ -93,7 +93,7 @@ TEST(ScanlineFill, HatchesCoverTheSolidSpanOfEachRow) {
 }
 
 TEST(ScanlineFill, ScanOffsetMovesTheRowOffAFace) {
-  const IndexedMesh box = testing::indexed_box({0, 0.5, 0}, {1, 2.5, 1});
+  const IndexedMesh box = test::indexed_box_lo_hi_diagonals({0, 0.5, 0}, {1, 2.5, 1});
   const LayerFill fill = fill_layer(box, unit_grid(4), 0, FillRule::NonZero, 0.0001);
   // Shifted up by 0.1 um, row 0's scanline is inside the box and row 2's is above it.
   EXPECT_EQ(fill.solid[0 * 4 + 0], 1);

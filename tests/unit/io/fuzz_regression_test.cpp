@@ -9,16 +9,14 @@
 
 #include "strata/io/read_cells.hpp"
 #include "strata/io/read_mesh.hpp"
+#include "support/mesh_reading.hpp"
 #include "support/temp_dir.hpp"
 #include "support/text_meshes.hpp"
 
 namespace strata::io {
 namespace {
 
-bool contains(std::string_view text, std::string_view part) {
-  return text.find(part) != std::string_view::npos;
-}
-
+using test::contains;
 /// An ASCII PLY of one triangle whose face list has the given type and third
 /// index.
 std::string ply_triangle(std::string_view list_type, std::string_view third_index) {

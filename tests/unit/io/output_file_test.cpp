@@ -5,16 +5,16 @@
 #include <filesystem>
 #include <string>
 
-#include "../export/export_test_support.hpp"
 #include "support/file_size_limit.hpp"
+#include "support/sink_runs.hpp"
+#include "support/text_meshes.hpp"
 
 namespace strata::io {
 namespace {
 
+using test::read_file;
 using testing::list_tree;
-using testing::read_file_bytes;
 using testing::ScratchDir;
-using testing::write_file_bytes;
 
 TEST(OutputFile, CommitRenamesTemporaryOntoFinalPath) {
   ScratchDir dir;
@@ -23,7 +23,7 @@ TEST(OutputFile, CommitRenamesTemporaryOntoFinalPath) {
   out->write("hello ");
   out->write("world");
   ASSERT_TRUE(out->commit());
-  EXPECT_EQ(read_file_bytes(dir / "a.bin"), "hello world");
+  EXPECT_EQ(read_file(dir / "a.bin"), "hello world");
   EXPECT_EQ(list_tree(dir.path()), std::vector<std::string>{"a.bin"});
 }
 
@@ -71,23 +71,23 @@ TEST(OutputFile, DiscardedFileCannotBeCommitted) {
 
 TEST(OutputFile, CommitReplacesExistingFile) {
   ScratchDir dir;
-  write_file_bytes(dir / "a.bin", "old content");
+  test::write_text_file(dir / "a.bin", "old content");
   auto out = OutputFile::create(dir / "a.bin");
   ASSERT_TRUE(out);
   out->write("new");
-  EXPECT_EQ(read_file_bytes(dir / "a.bin"), "old content");
+  EXPECT_EQ(read_file(dir / "a.bin"), "old content");
   ASSERT_TRUE(out->commit());
-  EXPECT_EQ(read_file_bytes(dir / "a.bin"), "new");
+  EXPECT_EQ(read_file(dir / "a.bin"), "new");
 }
 
 TEST(OutputFile, DiscardKeepsExistingFile) {
   ScratchDir dir;
-  write_file_bytes(dir / "a.bin", "old content");
+  test::write_text_file(dir / "a.bin", "old content");
   auto out = OutputFile::create(dir / "a.bin");
   ASSERT_TRUE(out);
   out->write("new");
   out->discard();
-  EXPECT_EQ(read_file_bytes(dir / "a.bin"), "old content");
+  EXPECT_EQ(read_file(dir / "a.bin"), "old content");
   EXPECT_EQ(list_tree(dir.path()), std::vector<std::string>{"a.bin"});
 }
 
@@ -166,7 +166,7 @@ TEST(OutputFile, MoveTransfersTheOpenFile) {
   EXPECT_EQ(first.stream(), nullptr);  // NOLINT(bugprone-use-after-move): moved-from state
   second.write("cd");
   ASSERT_TRUE(second.commit());
-  EXPECT_EQ(read_file_bytes(dir / "a.bin"), "abcd");
+  EXPECT_EQ(read_file(dir / "a.bin"), "abcd");
 }
 
 TEST(OutputFile, TwoFilesForOnePathGetDistinctTemporaries) {
@@ -181,7 +181,7 @@ TEST(OutputFile, TwoFilesForOnePathGetDistinctTemporaries) {
 TEST(OutputFile, WriteTextFileWritesContentAtomically) {
   ScratchDir dir;
   ASSERT_TRUE(write_text_file(dir / "report.json", "{\"ok\": true}\n"));
-  EXPECT_EQ(read_file_bytes(dir / "report.json"), "{\"ok\": true}\n");
+  EXPECT_EQ(read_file(dir / "report.json"), "{\"ok\": true}\n");
   EXPECT_EQ(list_tree(dir.path()), std::vector<std::string>{"report.json"});
 }
 

@@ -11,26 +11,27 @@
 #include <string>
 #include <vector>
 
-#include "../export/export_test_support.hpp"
 #include "strata/export/cells_writer.hpp"
+#include "support/mesh_reading.hpp"
+#include "support/sink_runs.hpp"
+#include "support/text_meshes.hpp"
 
 namespace strata::io {
 namespace {
 
-using testing::read_file_bytes;
+using test::contains;
+using test::read_file;
 using testing::run_sink;
 using testing::ScratchDir;
 using testing::small_layers;
 using testing::small_run;
-using testing::write_file_bytes;
 
 using Counts = std::array<std::uint64_t, 3>;
 
 std::filesystem::path write_small(const ScratchDir& dir, CellsEncoding encoding) {
   const auto path = dir / (encoding == CellsEncoding::Binary ? "part.cells" : "part.cells.txt");
   auto sink = make_cells_writer(path, encoding);
-  auto ok = run_sink(*sink, small_run(), small_layers());
-  EXPECT_TRUE(ok) << ok.error().to_string();
+  testing::expect_run(*sink, small_run(), small_layers());
   return path;
 }
 
@@ -63,10 +64,6 @@ Error read_error(const std::filesystem::path& path) {
   if (read) return {};
   EXPECT_EQ(read.error().code, ErrorCode::BadInput);
   return read.error();
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
 }
 
 TEST(CellsReader, BinaryRoundTripGivesTheWrittenClasses) {
@@ -206,7 +203,7 @@ TEST_P(CellsReaderBinaryEdit, IsRejected) {
   const BinaryEditCase& c = GetParam();
   ScratchDir dir;
   const auto path = write_small(dir, CellsEncoding::Binary);
-  write_file_bytes(path, c.edit(read_file_bytes(path)));
+  test::write_text_file(path, c.edit(read_file(path)));
   const Error e = read_error(path);
   if (c.place != nullptr) {
     EXPECT_EQ(e.location, path.string() + c.place);
@@ -255,11 +252,11 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(CellsReader, ReservedCodeNamesLayerRowAndCell) {
   ScratchDir dir;
   const auto path = write_small(dir, CellsEncoding::Binary);
-  std::string file = read_file_bytes(path);
+  std::string file = read_file(path);
   // Layer 1, cell index 6 = row 1, cell 1: byte 80 + 4 + 1, bits 3..2 (0xF5 -> 0xF9: 01 -> 10).
   ASSERT_EQ(static_cast<unsigned char>(file[85]), 0xF5);
   file[85] = static_cast<char>(0xF9);
-  write_file_bytes(path, file);
+  test::write_text_file(path, file);
   const Error e = read_error(path);
   EXPECT_EQ(e.location, path.string() + ": layer 1, row 1, cell 1");
   EXPECT_TRUE(contains(e.message, "reserved cell code 10")) << e.message;
@@ -268,7 +265,7 @@ TEST(CellsReader, ReservedCodeNamesLayerRowAndCell) {
 TEST(CellsReader, SummaryStopsAtTheSameErrors) {
   ScratchDir dir;
   const auto path = write_small(dir, CellsEncoding::Binary);
-  write_file_bytes(path, read_file_bytes(path).substr(0, 84));
+  test::write_text_file(path, read_file(path).substr(0, 84));
   auto summary = summarize_cells(path);
   ASSERT_FALSE(summary);
   EXPECT_EQ(summary.error().code, ErrorCode::BadInput);
@@ -276,7 +273,7 @@ TEST(CellsReader, SummaryStopsAtTheSameErrors) {
 
 TEST(CellsReader, UnknownContentIsNotACellsFile) {
   ScratchDir dir;
-  write_file_bytes(dir / "x.cells", "solid cube\nfacet normal 0 0 1\n");
+  test::write_text_file(dir / "x.cells", "solid cube\nfacet normal 0 0 1\n");
   const Error e = read_error(dir / "x.cells");
   EXPECT_TRUE(contains(e.message, "not a cells file")) << e.message;
 }
@@ -287,11 +284,11 @@ TEST(CellsReader, UnknownContentIsNotACellsFile) {
 std::filesystem::path ascii_with_line(const ScratchDir& dir, std::size_t number,
                                       const std::string& replacement) {
   const auto path = write_small(dir, CellsEncoding::Ascii);
-  auto lines = testing::lines_of(read_file_bytes(path));
+  auto lines = testing::lines_of(read_file(path));
   lines.at(number - 1) = replacement;
   std::string text;
   for (const auto& line : lines) text += line + "\n";
-  write_file_bytes(path, text);
+  test::write_text_file(path, text);
   return path;
 }
 
@@ -373,10 +370,10 @@ TEST(CellsReader, AsciiSignedNumbersAreRead) {
 TEST(CellsReader, AsciiTruncatedFileSaysWhatIsMissing) {
   ScratchDir dir;
   const auto path = write_small(dir, CellsEncoding::Ascii);
-  auto lines = testing::lines_of(read_file_bytes(path));
+  auto lines = testing::lines_of(read_file(path));
   std::string text;
   for (std::size_t n = 0; n < 11; ++n) text += lines[n] + "\n";  // stops inside layer 1
-  write_file_bytes(path, text);
+  test::write_text_file(path, text);
   const Error e = read_error(path);
   EXPECT_EQ(e.location, path.string() + ":12");
   EXPECT_TRUE(contains(e.message, "file ends inside layer 1: 1 of 3 rows")) << e.message;
@@ -385,7 +382,7 @@ TEST(CellsReader, AsciiTruncatedFileSaysWhatIsMissing) {
 TEST(CellsReader, AsciiExtraContentAfterTheLastLayerIsRejected) {
   ScratchDir dir;
   const auto path = write_small(dir, CellsEncoding::Ascii);
-  write_file_bytes(path, read_file_bytes(path) + "\n0000000000\n");
+  test::write_text_file(path, read_file(path) + "\n0000000000\n");
   const Error e = read_error(path);
   EXPECT_EQ(e.location, path.string() + ":15");
 }
@@ -393,10 +390,10 @@ TEST(CellsReader, AsciiExtraContentAfterTheLastLayerIsRejected) {
 /// The first `count` lines of the ASCII file of small_run().
 std::filesystem::path ascii_first_lines(const ScratchDir& dir, std::size_t count) {
   const auto path = write_small(dir, CellsEncoding::Ascii);
-  const auto lines = testing::lines_of(read_file_bytes(path));
+  const auto lines = testing::lines_of(read_file(path));
   std::string text;
   for (std::size_t n = 0; n < count; ++n) text += lines.at(n) + "\n";
-  write_file_bytes(path, text);
+  test::write_text_file(path, text);
   return path;
 }
 
@@ -440,10 +437,10 @@ TEST(CellsReader, AsciiHeaderValuesAreCheckedAsInBinaryFiles) {
 TEST(CellsReader, BinaryNonFiniteOriginIsRejected) {
   ScratchDir dir;
   const auto path = write_small(dir, CellsEncoding::Binary);
-  std::string file = read_file_bytes(path);
+  std::string file = read_file(path);
   const unsigned char inf_le[8] = {0, 0, 0, 0, 0, 0, 0xF0, 0x7F};
   for (int b = 0; b < 8; ++b) file[32 + b] = static_cast<char>(inf_le[b]);  // y0 = +inf
-  write_file_bytes(path, file);
+  test::write_text_file(path, file);
   const Error e = read_error(path);
   EXPECT_EQ(e.location, path.string());
   EXPECT_EQ(e.message, "origin -1.5 inf 0.125 is not finite");
@@ -453,10 +450,10 @@ TEST(CellsReader, BinaryGridTooLargeToAddressIsRejectedBeforeItsLength) {
   // 4294967295 x 4294967295 cells a layer take 2^62 bytes: five layers overflow a 64-bit size.
   ScratchDir dir;
   const auto path = write_small(dir, CellsEncoding::Binary);
-  std::string file = read_file_bytes(path).substr(0, 80);
+  std::string file = read_file(path).substr(0, 80);
   for (int b = 12; b < 20; ++b) file[b] = static_cast<char>(0xFF);  // nx, ny = 2^32 - 1
   file[20] = 5;                                                     // nz = 5
-  write_file_bytes(path, file);
+  test::write_text_file(path, file);
   const Error e = read_error(path);
   EXPECT_EQ(e.location, path.string());
   EXPECT_EQ(e.message, "grid 4294967295 x 4294967295 x 5 is too large to address");
@@ -472,7 +469,7 @@ TEST(CellsReader, FolderIsNotACellsFile) {
 TEST(CellsReader, FileShorterThanAnyCellsFileIsRejected) {
   ScratchDir dir;
   for (const std::string& bytes : {std::string(), std::string("ST")}) {
-    write_file_bytes(dir / "tiny.cells", bytes);
+    test::write_text_file(dir / "tiny.cells", bytes);
     const Error e = read_error(dir / "tiny.cells");
     EXPECT_EQ(e.location, (dir / "tiny.cells").string());
     EXPECT_EQ(e.message,
@@ -484,8 +481,8 @@ TEST(CellsReader, AsciiAcceptsCrLfLineEnds) {
   ScratchDir dir;
   const auto path = write_small(dir, CellsEncoding::Ascii);
   std::string crlf;
-  for (const auto& line : testing::lines_of(read_file_bytes(path))) crlf += line + "\r\n";
-  write_file_bytes(path, crlf);
+  for (const auto& line : testing::lines_of(read_file(path))) crlf += line + "\r\n";
+  test::write_text_file(path, crlf);
   auto read = read_cells(path);
   ASSERT_TRUE(read) << read.error().to_string();
   EXPECT_EQ(read->cells, all_small_cells());
@@ -575,8 +572,9 @@ TEST(CellsReader, AsciiBadNumbersOfEveryHeaderKeyAndTheLayerIndexNameTheirLine) 
 TEST(CellsReader, AsciiHeaderEndingWithoutAKeyIsNamedAfterTheLastLine) {
   ScratchDir dir;
   const auto path = write_small(dir, CellsEncoding::Ascii);
-  const auto lines = testing::lines_of(read_file_bytes(path));
-  write_file_bytes(path, lines[0] + "\n" + lines[1] + "\n" + lines[2] + "\n" + lines[3] + "\n");
+  const auto lines = testing::lines_of(read_file(path));
+  test::write_text_file(path,
+                        lines[0] + "\n" + lines[1] + "\n" + lines[2] + "\n" + lines[3] + "\n");
   const Error e = read_error(path);
   EXPECT_EQ(e.location, path.string() + ":5");
   EXPECT_EQ(e.message, "the header has no 'shell' line before the first layer");
@@ -654,11 +652,11 @@ TEST(CellsReader, BinaryNonFiniteHeaderValuesAreRejected) {
   for (const Case& c : cases) {
     ScratchDir dir;
     const auto path = write_small(dir, CellsEncoding::Binary);
-    std::string file = read_file_bytes(path);
+    std::string file = read_file(path);
     std::uint64_t bits = 0;
     std::memcpy(&bits, &c.value, sizeof bits);
     for (int b = 0; b < 8; ++b) file[c.offset + b] = static_cast<char>((bits >> (8 * b)) & 0xFF);
-    write_file_bytes(path, file);
+    test::write_text_file(path, file);
     const Error e = read_error(path);
     EXPECT_EQ(e.location, path.string());
     EXPECT_EQ(e.message, c.message);

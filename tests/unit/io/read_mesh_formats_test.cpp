@@ -12,6 +12,7 @@
 
 #include "strata/io/read_mesh.hpp"
 #include "support/mesh_reading.hpp"
+#include "support/read_file.hpp"
 #include "support/temp_dir.hpp"
 
 namespace strata::io {
@@ -23,11 +24,6 @@ using test::corpus_file;
 using test::expect_read_with_diagnostic;
 using test::expect_refused;
 using test::find_diagnostic;
-
-std::string file_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 using Triangle = std::array<Vec3, 3>;
 
@@ -135,17 +131,18 @@ TEST(ReadMeshDispatch, ThreeMfZipAndAmfAreUnsupported) {
 }
 
 TEST(ReadMeshDispatch, StlContentWinsOverAWrongExtension) {
-  const std::string binary = file_bytes(adversarial("stray_byte_binary.stl"));
+  const std::string binary = test::read_file(adversarial("stray_byte_binary.stl"));
   const auto as_obj = read_mesh_bytes(binary, "model.obj");
   ASSERT_TRUE(as_obj) << as_obj.error().to_string();
   EXPECT_EQ(as_obj->format, "stl-binary");
-  const auto as_off = read_mesh_bytes(file_bytes(adversarial("tetra_ascii.stl")), "model.off");
+  const auto as_off = read_mesh_bytes(test::read_file(adversarial("tetra_ascii.stl")), "model.off");
   ASSERT_TRUE(as_off) << as_off.error().to_string();
   EXPECT_EQ(as_off->format, "stl-ascii");
 }
 
 TEST(ReadMeshDispatch, FilesWithoutExtensionAreRecognisedByContent) {
-  const auto ply = read_mesh_bytes(file_bytes(adversarial("tetra_binary_big_endian.ply")), "m");
+  const auto ply =
+      read_mesh_bytes(test::read_file(adversarial("tetra_binary_big_endian.ply")), "m");
   ASSERT_TRUE(ply) << ply.error().to_string();
   EXPECT_EQ(ply->format, "ply");
   const auto off = read_mesh_bytes("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "m");

@@ -14,10 +14,12 @@
 #include <vector>
 
 #include "io/read_mesh_internal.hpp"
+#include "support/mesh_reading.hpp"
 
 namespace strata::io {
 namespace {
 
+using test::find_diagnostic;
 constexpr std::string_view kTriangleBody = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
 
 std::string ascii_header(std::string_view elements) {
@@ -43,13 +45,6 @@ void expect_error(std::string_view bytes, std::string_view location, std::string
   EXPECT_EQ(e.code, ErrorCode::BadInput);
   EXPECT_EQ(e.location, location);
   EXPECT_EQ(e.message, message);
-}
-
-const Diagnostic* find_diagnostic(const TriangleSoup& soup, std::string_view code) {
-  for (const Diagnostic& d : soup.diagnostics) {
-    if (d.code == code) return &d;
-  }
-  return nullptr;
 }
 
 template <class T>

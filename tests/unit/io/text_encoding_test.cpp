@@ -13,6 +13,7 @@
 
 #include "strata/io/read_mesh.hpp"
 #include "support/corpus.hpp"
+#include "support/mesh_reading.hpp"
 #include "support/read_file.hpp"
 #include "support/temp_dir.hpp"
 #include "support/text_encodings.hpp"
@@ -21,19 +22,10 @@
 namespace strata::io {
 namespace {
 
+using test::contains;
+using test::find_diagnostic;
 using test::to_utf16;
 using test::Utf16Order;
-
-bool contains(std::string_view text, std::string_view part) {
-  return text.find(part) != std::string_view::npos;
-}
-
-const Diagnostic* find_diagnostic(const TriangleSoup& soup, std::string_view code) {
-  for (const Diagnostic& d : soup.diagnostics) {
-    if (d.code == code) return &d;
-  }
-  return nullptr;
-}
 
 /// A text file of the corpus, one of each text format (OBJ with comments, groups, negative
 /// indices and quads; ASCII STL with tabs; OFF with comments; ASCII PLY).

@@ -17,6 +17,7 @@
 
 #include "strata/io/read_mesh.hpp"
 #include "strata/mesh/primitive_models.hpp"
+#include "support/read_file.hpp"
 #include "support/temp_dir.hpp"
 
 namespace strata::io {
@@ -70,13 +71,6 @@ std::string bit_difference(const TriangleSoup& a, const TriangleSoup& b) {
     }
   }
   return "";
-}
-
-std::string file_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return std::move(bytes).str();
 }
 
 TriangleSoup single_triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -313,7 +307,7 @@ TEST(WriteStl, FileHoldsExactlyTheStlBytes) {
   TempDir dir;
   const auto ring = mesh::make_ring(20, 12, 10, 16);
   ASSERT_TRUE(write_stl(dir / "ring.stl", ring, StlEncoding::Ascii));
-  EXPECT_EQ(file_bytes(dir / "ring.stl"), stl_bytes(ring, StlEncoding::Ascii));
+  EXPECT_EQ(test::read_file(dir / "ring.stl"), stl_bytes(ring, StlEncoding::Ascii));
 }
 
 TEST(WriteStl, WritesModelsLargerThanOneChunkWhole) {
@@ -321,7 +315,7 @@ TEST(WriteStl, WritesModelsLargerThanOneChunkWhole) {
   const auto ring = mesh::make_ring(20, 12, 10, 8200);  // 65600 facets: two write chunks
   for (const auto encoding : {StlEncoding::Binary, StlEncoding::Ascii}) {
     ASSERT_TRUE(write_stl(dir / "ring.stl", ring, encoding));
-    EXPECT_TRUE(file_bytes(dir / "ring.stl") == stl_bytes(ring, encoding));
+    EXPECT_TRUE(test::read_file(dir / "ring.stl") == stl_bytes(ring, encoding));
   }
 }
 
@@ -329,7 +323,7 @@ TEST(WriteStl, DefaultsToBinary) {
   TempDir dir;
   const auto tet = mesh::make_tetrahedron();
   ASSERT_TRUE(write_stl(dir / "tet.stl", tet));
-  EXPECT_EQ(file_bytes(dir / "tet.stl"), stl_bytes(tet, StlEncoding::Binary));
+  EXPECT_EQ(test::read_file(dir / "tet.stl"), stl_bytes(tet, StlEncoding::Binary));
 }
 
 TEST(WriteStl, LeavesOnlyTheFinalFileInTheFolder) {
@@ -375,7 +369,7 @@ TEST(WriteStl, ReplacesAnExistingFile) {
   TempDir dir;
   ASSERT_TRUE(write_stl(dir / "model.stl", mesh::make_ring(20, 12, 10, 64)));
   ASSERT_TRUE(write_stl(dir / "model.stl", mesh::make_tetrahedron()));
-  EXPECT_EQ(file_bytes(dir / "model.stl"),
+  EXPECT_EQ(test::read_file(dir / "model.stl"),
             stl_bytes(mesh::make_tetrahedron(), StlEncoding::Binary));
 }
 

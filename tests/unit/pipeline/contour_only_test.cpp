@@ -4,12 +4,12 @@
 
 #include <vector>
 
-#include "collecting_sink_for_tests.hpp"
 #include "strata/exact/slice_exact.hpp"
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
 #include "strata/pipeline/cancel_sink.hpp"
 #include "strata/slicer/slice_model.hpp"
+#include "support/collecting_sink.hpp"
 
 namespace strata {
 namespace {

@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "../slice/box_mesh_for_tests.hpp"
-#include "collecting_sink_for_tests.hpp"
 #include "strata/slicer/slice_model.hpp"
+#include "support/collecting_sink.hpp"
+#include "support/mesh_builders.hpp"
 
 namespace strata {
 namespace {
@@ -128,7 +128,7 @@ SliceOptions unit_cells() {
 }
 
 struct BoxRun {
-  IndexedMesh mesh = testing::indexed_box({0, 0, 0}, {4, 4, 12});
+  IndexedMesh mesh = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 4, 12});
   SliceOptions options = unit_cells();
   GridSpec grid = make_grid(mesh.bounds(), options.grid).value();
 };

@@ -12,43 +12,21 @@
 #include "strata/diagnose/diagnose_mesh.hpp"
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
+#include "support/mesh_builders.hpp"
 
 namespace strata::repair {
 namespace {
 
-using Triangle = std::array<Vec3, 3>;
+using Triangle = test::Facet;
+using test::box_facets_lo_hi_diagonals;
+using test::joined;
+using test::reversed;
 
 TriangleSoup soup_of(const std::vector<Triangle>& triangles) {
   TriangleSoup soup;
   soup.triangles = triangles;
   soup.format = "generated";
   return soup;
-}
-
-/// The 12 outward-facing facets of the box [lo, hi]; each square face is split along the diagonal
-/// from its lowest-indexed corner, so two boxes sharing a face share its diagonal.
-std::vector<Triangle> box(Vec3 lo, Vec3 hi) {
-  std::array<Vec3, 8> v;
-  for (int i = 0; i < 8; ++i) {
-    v[i] = {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
-  }
-  constexpr int kFacets[12][3] = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-                                  {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
-  std::vector<Triangle> out;
-  for (const auto& f : kFacets) out.push_back({v[f[0]], v[f[1]], v[f[2]]});
-  return out;
-}
-
-Triangle reversed(const Triangle& t) { return {t[0], t[2], t[1]}; }
-
-std::vector<Triangle> reversed(std::vector<Triangle> ts) {
-  for (Triangle& t : ts) t = reversed(t);
-  return ts;
-}
-
-std::vector<Triangle> joined(std::vector<Triangle> a, const std::vector<Triangle>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
 }
 
 std::vector<Triangle> without(std::vector<Triangle> ts, std::size_t index) {
@@ -85,7 +63,7 @@ std::vector<std::size_t> change_counts(const RepairLog& log) {
 }
 
 TEST(RepairMesh, LeavesAClosedBoxAsItIs) {
-  const TriangleSoup input = soup_of(box({0, 0, 0}, {1, 1, 1}));
+  const TriangleSoup input = soup_of(box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1}));
   const RepairResult r = repaired(input, true);
   EXPECT_EQ(r.soup.triangles, input.triangles);
   EXPECT_FALSE(r.log.changed_anything());
@@ -100,7 +78,7 @@ TEST(RepairMesh, LeavesAClosedBoxAsItIs) {
 }
 
 TEST(RepairMesh, RemovesADuplicatedFacet) {
-  std::vector<Triangle> facets = box({0, 0, 0}, {1, 1, 1});
+  std::vector<Triangle> facets = box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1});
   facets.push_back(facets[4]);
   const RepairResult r = repaired(soup_of(facets));
   EXPECT_EQ(r.log.duplicate_facets_removed, 1u);
@@ -108,7 +86,7 @@ TEST(RepairMesh, RemovesADuplicatedFacet) {
   ASSERT_EQ(r.log.changes.size(), 1u);
   EXPECT_EQ(r.log.changes[0].facet, 12u);
   EXPECT_EQ(r.log.changes[0].kind, FacetChangeKind::RemovedDuplicate);
-  EXPECT_EQ(r.soup.triangles, box({0, 0, 0}, {1, 1, 1}));
+  EXPECT_EQ(r.soup.triangles, box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1}));
   const auto after = diagnose_soup(r.soup);
   EXPECT_EQ(after.duplicate_facets.count, 0u);
   EXPECT_EQ(after.verdict, diagnose::Verdict::Printable) << after.verdict_reason;
@@ -117,7 +95,7 @@ TEST(RepairMesh, RemovesADuplicatedFacet) {
 TEST(RepairMesh, KeepsTheOrientationMostCopiesHave) {
   // Facet 4 once as it should be and twice reversed: the reversed copy is kept, then turned back by
   // the orientation step because its neighbours disagree with it.
-  std::vector<Triangle> facets = box({0, 0, 0}, {1, 1, 1});
+  std::vector<Triangle> facets = box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1});
   facets.push_back(reversed(facets[4]));
   facets.push_back(reversed(facets[4]));
   const RepairResult r = repaired(soup_of(facets));
@@ -130,7 +108,8 @@ TEST(RepairMesh, KeepsTheOrientationMostCopiesHave) {
 TEST(RepairMesh, RemovesTheWallBetweenTwoBoxesThatTouch) {
   // The face x = 1 belongs to both boxes, once each way: both copies go and one closed solid is
   // left.
-  const TriangleSoup input = soup_of(joined(box({0, 0, 0}, {1, 1, 1}), box({1, 0, 0}, {2, 1, 1})));
+  const TriangleSoup input = soup_of(joined(box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1}),
+                                            box_facets_lo_hi_diagonals({1, 0, 0}, {2, 1, 1})));
   const auto before = diagnose_soup(input);
   EXPECT_EQ(before.duplicate_facets.count, 2u);
   const RepairResult r = repaired(input);
@@ -148,7 +127,8 @@ TEST(RepairMesh, RemovesTheWallBetweenTwoBoxesThatTouch) {
 TEST(RepairMesh, KeepsOneCopyOfCancellingFacetsWhenRemovingBothWouldOpenAHole) {
   // An open box (no top) with one side facet doubled in reverse: taking both copies away would cut
   // a hole into the side, so one stays.
-  std::vector<Triangle> facets = without(without(box({0, 0, 0}, {1, 1, 1}), 3), 2);
+  std::vector<Triangle> facets =
+      without(without(box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1}), 3), 2);
   facets.push_back(reversed(facets[4]));
   const RepairResult r = repaired(soup_of(facets));
   EXPECT_EQ(r.log.duplicate_facets_removed, 1u);
@@ -158,7 +138,7 @@ TEST(RepairMesh, KeepsOneCopyOfCancellingFacetsWhenRemovingBothWouldOpenAHole) {
 }
 
 TEST(RepairMesh, TurnsBackAFlippedFacetOfABox) {
-  std::vector<Triangle> facets = box({0, 0, 0}, {1, 1, 1});
+  std::vector<Triangle> facets = box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1});
   facets[5] = reversed(facets[5]);
   const RepairResult r = repaired(soup_of(facets));
   EXPECT_EQ(r.log.facets_flipped_for_consistency, 1u);
@@ -167,7 +147,7 @@ TEST(RepairMesh, TurnsBackAFlippedFacetOfABox) {
   ASSERT_EQ(r.log.changes.size(), 1u);
   EXPECT_EQ(r.log.changes[0].facet, 5u);
   EXPECT_EQ(r.log.changes[0].kind, FacetChangeKind::Flipped);
-  EXPECT_EQ(r.soup.triangles, box({0, 0, 0}, {1, 1, 1}));
+  EXPECT_EQ(r.soup.triangles, box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1}));
   EXPECT_EQ(diagnose_soup(r.soup).volume_mm3, 1.0);
 }
 
@@ -200,7 +180,8 @@ TEST(RepairMesh, TurnsAnInvertedSolidOutward) {
 
 TEST(RepairMesh, KeepsACavityFacingIn) {
   const TriangleSoup input =
-      soup_of(joined(box({0, 0, 0}, {4, 4, 4}), reversed(box({1, 1, 1}, {2, 2, 2}))));
+      soup_of(joined(box_facets_lo_hi_diagonals({0, 0, 0}, {4, 4, 4}),
+                     reversed(box_facets_lo_hi_diagonals({1, 1, 1}, {2, 2, 2}))));
   const RepairResult r = repaired(input);
   EXPECT_EQ(r.log.closed_shells, 2u);
   EXPECT_EQ(r.log.shells_reoriented, 0u);
@@ -208,7 +189,8 @@ TEST(RepairMesh, KeepsACavityFacingIn) {
 }
 
 TEST(RepairMesh, TurnsAnInnerWallThatFacesOutIntoACavity) {
-  const TriangleSoup input = soup_of(joined(box({0, 0, 0}, {4, 4, 4}), box({1, 1, 1}, {2, 2, 2})));
+  const TriangleSoup input = soup_of(joined(box_facets_lo_hi_diagonals({0, 0, 0}, {4, 4, 4}),
+                                            box_facets_lo_hi_diagonals({1, 1, 1}, {2, 2, 2})));
   const RepairResult r = repaired(input);
   EXPECT_EQ(r.log.shells_reoriented, 1u);
   EXPECT_EQ(r.log.facets_flipped_with_shells, 12u);
@@ -218,8 +200,8 @@ TEST(RepairMesh, TurnsAnInnerWallThatFacesOutIntoACavity) {
 TEST(RepairMesh, TreatsOverlappingSolidsAsSolidsNotCavities) {
   // The second box's highest corners lie inside the first box, but the boxes intersect: it is a
   // second solid, to face out, not a cavity.
-  const std::vector<Triangle> a = box({0, 0, 0}, {2, 2, 2});
-  const std::vector<Triangle> b = box({1, 1, 0.5}, {3, 3, 1.5});
+  const std::vector<Triangle> a = box_facets_lo_hi_diagonals({0, 0, 0}, {2, 2, 2});
+  const std::vector<Triangle> b = box_facets_lo_hi_diagonals({1, 1, 0.5}, {3, 3, 1.5});
   const RepairResult kept = repaired(soup_of(joined(a, b)));
   EXPECT_EQ(kept.log.shells_reoriented, 0u);
   const RepairResult turned = repaired(soup_of(joined(a, reversed(b))));
@@ -228,7 +210,7 @@ TEST(RepairMesh, TreatsOverlappingSolidsAsSolidsNotCavities) {
 }
 
 TEST(RepairMesh, FillsTheHoleOfARemovedFacet) {
-  const std::vector<Triangle> cube = box({0, 0, 0}, {1, 1, 1});
+  const std::vector<Triangle> cube = box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1});
   const RepairResult r = repaired(soup_of(without(cube, 7)), true);
   EXPECT_EQ(r.log.holes_found, 1u);
   EXPECT_EQ(r.log.holes_filled, 1u);
@@ -243,7 +225,7 @@ TEST(RepairMesh, FillsTheHoleOfARemovedFacet) {
 TEST(RepairMesh, FillsTheSquareHoleOfARemovedFace) {
   // Both triangles of the face y = 1 removed: a planar square hole; any triangulation of it gives
   // the cube's volume exactly.
-  const std::vector<Triangle> cube = box({0, 0, 0}, {2, 2, 2});
+  const std::vector<Triangle> cube = box_facets_lo_hi_diagonals({0, 0, 0}, {2, 2, 2});
   const RepairResult r = repaired(soup_of(without(without(cube, 7), 6)), true);
   EXPECT_EQ(r.log.holes_filled, 1u);
   EXPECT_EQ(r.log.hole_facets_added, 2u);
@@ -266,7 +248,8 @@ TEST(RepairMesh, FillsTheHoleOfASphereAndOrientsItOutward) {
 }
 
 TEST(RepairMesh, CountsAHoleButLeavesItOpenUnlessAsked) {
-  const RepairResult r = repaired(soup_of(without(box({0, 0, 0}, {1, 1, 1}), 7)));
+  const RepairResult r =
+      repaired(soup_of(without(box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1}), 7)));
   EXPECT_EQ(r.log.holes_found, 1u);
   EXPECT_FALSE(r.log.fill_holes_requested);
   EXPECT_EQ(r.log.holes_filled, 0u);
@@ -278,8 +261,9 @@ TEST(RepairMesh, CountsAHoleButLeavesItOpenUnlessAsked) {
 }
 
 TEST(RepairMesh, LeavesAHoleLargerThanTheLimitOpen) {
-  auto result = repair_mesh(soup_of(without(without(box({0, 0, 0}, {1, 1, 1}), 7), 6)),
-                            RepairOptions{.fill_holes = true, .max_hole_edges = 3});
+  auto result =
+      repair_mesh(soup_of(without(without(box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1}), 7), 6)),
+                  RepairOptions{.fill_holes = true, .max_hole_edges = 3});
   ASSERT_TRUE(result.has_value());
   EXPECT_EQ(result->log.holes_found, 1u);
   EXPECT_EQ(result->log.holes_filled, 0u);
@@ -290,7 +274,7 @@ TEST(RepairMesh, LeavesAHoleLargerThanTheLimitOpen) {
 TEST(RepairMesh, DoesNotFillTheBorderOfAFinOnANonManifoldEdge) {
   // A fin: one more triangle on an edge of the box. Its border runs along that edge, which the
   // box's facets use: it is no hole, and filling it would close the fin against the box.
-  std::vector<Triangle> facets = box({0, 0, 0}, {1, 1, 1});
+  std::vector<Triangle> facets = box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1});
   facets.push_back({Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0.5, -1, 0.5}});
   const RepairResult r = repaired(soup_of(facets), true);
   EXPECT_EQ(r.log.non_manifold_edges, 1u);
@@ -301,7 +285,7 @@ TEST(RepairMesh, DoesNotFillTheBorderOfAFinOnANonManifoldEdge) {
 }
 
 TEST(RepairMesh, RemovesZeroAreaFacets) {
-  const std::vector<Triangle> cube = box({0, 0, 0}, {2, 2, 2});
+  const std::vector<Triangle> cube = box_facets_lo_hi_diagonals({0, 0, 0}, {2, 2, 2});
   std::vector<Triangle> facets = cube;
   facets.insert(facets.begin() + 3, Triangle{Vec3{0, 0, 0}, Vec3{0, 0, 0}, Vec3{2, 2, 2}});
   facets.push_back({Vec3{0, 0, 0}, Vec3{1, 1, 1}, Vec3{2, 2, 2}});  // three collinear corners
@@ -318,7 +302,7 @@ TEST(RepairMesh, RemovesZeroAreaFacets) {
 /// A box [0, 2]^3 whose top face is cut at M = (1, 0, 2), the middle of its front edge, while the
 /// front face is not: a T-junction, the front face's edge running past M.
 std::vector<Triangle> box_with_t_junction() {
-  std::vector<Triangle> facets = box({0, 0, 0}, {2, 2, 2});
+  std::vector<Triangle> facets = box_facets_lo_hi_diagonals({0, 0, 0}, {2, 2, 2});
   const Vec3 m{1, 0, 2};
   const Vec3 v4{0, 0, 2}, v5{2, 0, 2}, v6{0, 2, 2}, v7{2, 2, 2};
   facets[2] = {v4, m, v6};
@@ -356,7 +340,8 @@ TEST(RepairMesh, ClosesATJunctionCrackSealedByAZeroAreaFacet) {
 }
 
 TEST(RepairMesh, SplitsTheVertexWhereTwoSolidsTouch) {
-  const TriangleSoup input = soup_of(joined(box({0, 0, 0}, {1, 1, 1}), box({1, 1, 1}, {2, 2, 2})));
+  const TriangleSoup input = soup_of(joined(box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1}),
+                                            box_facets_lo_hi_diagonals({1, 1, 1}, {2, 2, 2})));
   EXPECT_EQ(diagnose_soup(input).non_manifold_vertices.count, 1u);
   const RepairResult r = repaired(input);
   EXPECT_EQ(r.log.non_manifold_vertices_split, 1u);
@@ -411,7 +396,7 @@ TEST(RepairMesh, IsIdempotent) {
   facets.push_back(facets[1]);
   facets.push_back({Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{2, 0, 0}});
   facets[9] = reversed(facets[9]);
-  facets = joined(facets, reversed(without(box({2, 2, 2}, {3, 3, 3}), 4)));
+  facets = joined(facets, reversed(without(box_facets_lo_hi_diagonals({2, 2, 2}, {3, 3, 3}), 4)));
   for (const bool fill : {false, true}) {
     const RepairResult first = repaired(soup_of(facets), fill);
     EXPECT_TRUE(first.log.changed_anything());
@@ -426,7 +411,7 @@ TEST(RepairMesh, IsIdempotent) {
 }
 
 TEST(RepairMesh, RefusesANonFiniteCoordinate) {
-  std::vector<Triangle> facets = box({0, 0, 0}, {1, 1, 1});
+  std::vector<Triangle> facets = box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1});
   facets[3][1].y = std::numeric_limits<double>::quiet_NaN();
   const auto result = repair_mesh(soup_of(facets));
   ASSERT_FALSE(result.has_value());
@@ -443,7 +428,7 @@ TEST(RepairMesh, RepairsAnEmptySoupToAnEmptySoup) {
 
 TEST(RepairMesh, RefusesANonFiniteCoordinateOnEveryAxis) {
   for (int axis = 0; axis < 3; ++axis) {
-    std::vector<Triangle> facets = box({0, 0, 0}, {1, 1, 1});
+    std::vector<Triangle> facets = box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1});
     double& c = axis == 0 ? facets[5][2].x : axis == 1 ? facets[5][2].y : facets[5][2].z;
     c = axis == 2 ? -std::numeric_limits<double>::infinity()
                   : std::numeric_limits<double>::infinity();
@@ -463,8 +448,9 @@ TEST(RepairMesh, NamesEveryKindOfChange) {
 }
 
 TEST(RepairMesh, OrientsNoVolumeWithoutAClosedShell) {
-  const RepairResult r = repaired(soup_of(
-      joined(without(box({0, 0, 0}, {1, 1, 1}), 0), without(box({3, 0, 0}, {4, 1, 1}), 0))));
+  const RepairResult r =
+      repaired(soup_of(joined(without(box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1}), 0),
+                              without(box_facets_lo_hi_diagonals({3, 0, 0}, {4, 1, 1}), 0))));
   EXPECT_EQ(r.log.open_shells, 2u);
   EXPECT_EQ(r.log.closed_shells, 0u);
   EXPECT_FALSE(r.log.volume_orientation_done);
@@ -473,9 +459,10 @@ TEST(RepairMesh, OrientsNoVolumeWithoutAClosedShell) {
 }
 
 TEST(RepairMesh, OrientsTheClosedShellsAndLeavesTheOpenOnesAsTheyAre) {
-  const RepairResult r = repaired(soup_of(
-      joined(joined(reversed(box({0, 0, 0}, {1, 1, 1})), without(box({3, 0, 0}, {4, 1, 1}), 0)),
-             without(box({6, 0, 0}, {7, 1, 1}), 0))));
+  const RepairResult r =
+      repaired(soup_of(joined(joined(reversed(box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1})),
+                                     without(box_facets_lo_hi_diagonals({3, 0, 0}, {4, 1, 1}), 0)),
+                              without(box_facets_lo_hi_diagonals({6, 0, 0}, {7, 1, 1}), 0))));
   EXPECT_EQ(r.log.closed_shells, 1u);
   EXPECT_EQ(r.log.open_shells, 2u);
   EXPECT_TRUE(r.log.volume_orientation_done);
@@ -487,7 +474,7 @@ TEST(RepairMesh, OrientsTheClosedShellsAndLeavesTheOpenOnesAsTheyAre) {
 
 /// The unit box with its corner (1, 1, 1) moved to `corner`.
 std::vector<Triangle> box_with_corner(const Vec3& corner) {
-  std::vector<Triangle> facets = box({0, 0, 0}, {1, 1, 1});
+  std::vector<Triangle> facets = box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1});
   for (Triangle& t : facets) {
     for (Vec3& p : t) {
       if (p == Vec3{1, 1, 1}) p = corner;
@@ -537,7 +524,7 @@ TEST(RepairMesh, ListsTheChangesOfOneFacetInTheOrderTheStepsRan) {
 
 TEST(RepairMesh, RemovesFacetsThatRepeatACornerWhereverItIsRepeated) {
   const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0};
-  const std::vector<Triangle> box_facets = box({0, 0, 0}, {1, 1, 1});
+  const std::vector<Triangle> box_facets = box_facets_lo_hi_diagonals({0, 0, 0}, {1, 1, 1});
   const std::vector<Triangle> needles = {{a, a, b}, {a, b, b}, {c, b, c}};
   const RepairResult r = repaired(soup_of(joined(box_facets, needles)));
   EXPECT_EQ(r.log.degenerate_facets_removed, 3u);

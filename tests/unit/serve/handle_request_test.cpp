@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "fake_tasks_for_tests.hpp"
 #include "serve/api_internal.hpp"
+#include "support/fake_tasks.hpp"
 #include "support/temp_dir.hpp"
 
 namespace strata::serve::detail {

@@ -11,8 +11,8 @@
 
 #include "support/http_client.hpp"
 #include "support/read_file.hpp"
+#include "support/test_server.hpp"
 #include "support/text_meshes.hpp"
-#include "test_server_for_tests.hpp"
 
 namespace strata::serve::testing {
 namespace {
@@ -21,8 +21,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using test::HttpClient;
 using test::HttpReply;
-
-json error_body(std::string_view message) { return json{{"error", message}}; }
 
 /// Whether the jobs folder becomes empty within 10 s (a refused or broken upload is removed by
 /// the server's thread, after the answer).
@@ -123,11 +121,11 @@ TEST(HttpSession, AnUploadThatCannotBeStoredIs500AndNothingIsKept) {
   fs::path deep = deep_root.path();
   while (deep.string().size() < 3900) deep /= std::string(200, 'd');
   fs::create_directories(deep);
+  ServerParts parts;
   ServerOptions options;
   options.port = 0;
   options.jobs_dir = deep;
-  FakeTasks tasks;
-  auto server = Server::start(options, tasks.runner());
+  auto server = parts.start(options);
   ASSERT_TRUE(server);
   HttpClient client((*server)->port());
   const std::string name = std::string(190, 'p') + ".stl";

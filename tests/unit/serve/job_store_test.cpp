@@ -5,9 +5,10 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "fake_tasks_for_tests.hpp"
 #include "serve/job_store_internal.hpp"
+#include "support/fake_tasks.hpp"
 #include "support/read_file.hpp"
+#include "support/temp_dir.hpp"
 #include "support/text_meshes.hpp"
 
 namespace strata::serve::detail {
@@ -18,19 +19,7 @@ using nlohmann::json;
 
 class JobStoreTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    root_ = fs::temp_directory_path() /
-            ("strata-jobs-" +
-             std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(root_);
-    fs::create_directories(root_);
-    model_ = root_.parent_path() / (root_.filename().string() + "-part.stl");
-    std::ofstream(model_) << "solid x\nendsolid x\n";
-  }
-  void TearDown() override {
-    fs::remove_all(root_);
-    fs::remove(model_);
-  }
+  void SetUp() override { test::write_text_file(model_, "solid x\nendsolid x\n"); }
 
   /// Waits until the job's task `which` has left queued and running.
   json wait_for(JobStore& store, const std::string& id, const std::string& which) {
@@ -44,8 +33,11 @@ class JobStoreTest : public ::testing::Test {
     return json::parse(*store.status_json(id));
   }
 
-  fs::path root_;
-  fs::path model_;
+  // The jobs folder, and the models beside it (outside it, as a user's files are).
+  test::TempDir jobs_{"jobs"};
+  test::TempDir models_{"models"};
+  fs::path root_ = jobs_.path();
+  fs::path model_ = models_ / "part.stl";
   testing::FakeTasks tasks_;
 };
 
@@ -255,8 +247,7 @@ TEST_F(JobStoreTest, ASliceOfAModelStillBeingCheckedChecksItsNewJobAgain) {
 
 TEST_F(JobStoreTest, OnlyTheDownloadsAJobHasAreOffered) {
   JobStore store(root_, tasks_.runner());
-  const fs::path bad = test::write_text_file(
-      root_.parent_path() / (root_.filename().string() + "-bad.stl"), "not a mesh");
+  const fs::path bad = test::write_text_file(models_ / "bad.stl", "not a mesh");
   auto id = store.add_file(bad);
   fs::remove(bad);
   ASSERT_TRUE(id);

@@ -9,7 +9,7 @@
 
 #include "support/http_client.hpp"
 #include "support/read_file.hpp"
-#include "test_server_for_tests.hpp"
+#include "support/test_server.hpp"
 
 namespace strata::serve::testing {
 namespace {
@@ -18,8 +18,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using test::HttpClient;
 using test::HttpReply;
-
-json error_body(std::string_view message) { return json{{"error", message}}; }
 
 TEST(JsonApi, InfoGivesTheUploadLimitAndTheFormats) {
   ServerOptions options;

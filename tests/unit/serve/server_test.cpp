@@ -10,8 +10,8 @@
 #include "support/http_client.hpp"
 #include "support/read_file.hpp"
 #include "support/temp_dir.hpp"
+#include "support/test_server.hpp"
 #include "support/text_meshes.hpp"
-#include "test_server_for_tests.hpp"
 
 namespace strata::serve::testing {
 namespace {
@@ -21,8 +21,6 @@ using nlohmann::json;
 using test::HttpClient;
 using test::HttpReply;
 
-json error_body(std::string_view message) { return json{{"error", message}}; }
-
 TEST(Server, ListensOnAFreePortWhenAskedForPortZero) {
   TestServer s;
   EXPECT_NE(s.port(), 0);
@@ -30,12 +28,10 @@ TEST(Server, ListensOnAFreePortWhenAskedForPortZero) {
 }
 
 TEST(Server, RefusesABindAddressThatIsNotAnIpAddress) {
-  test::TempDir jobs("serve");
-  FakeTasks tasks;
+  ServerParts parts;
   ServerOptions options;
   options.bind_address = "localhost";
-  options.jobs_dir = jobs.path();
-  const auto server = Server::start(options, tasks.runner());
+  const auto server = parts.start(options);
   ASSERT_FALSE(server);
   EXPECT_EQ(server.error().code, ErrorCode::Usage);
   EXPECT_EQ(server.error().message, "not an IP address: localhost");
@@ -44,12 +40,10 @@ TEST(Server, RefusesABindAddressThatIsNotAnIpAddress) {
 
 TEST(Server, RefusesAPortInUse) {
   TestServer first;
-  test::TempDir jobs("serve");
-  FakeTasks tasks;
+  ServerParts parts;
   ServerOptions options;
   options.port = first.port();
-  options.jobs_dir = jobs.path();
-  const auto second = Server::start(options, tasks.runner());
+  const auto second = parts.start(options);
   ASSERT_FALSE(second);
   EXPECT_EQ(second.error().code, ErrorCode::Usage);
   EXPECT_EQ(second.error().message, "cannot listen on 127.0.0.1 port " +
@@ -123,13 +117,11 @@ TEST(Server, AStoppingServerTakesNoNewWork) {
 }
 
 TEST(Server, BoundBeyondLoopbackItAnswersAnyHost) {
-  test::TempDir jobs("serve");
-  FakeTasks tasks;
+  ServerParts parts;
   ServerOptions options;
   options.bind_address = "0.0.0.0";
   options.port = 0;
-  options.jobs_dir = jobs.path();
-  auto server = Server::start(options, tasks.runner());
+  auto server = parts.start(options);
   ASSERT_TRUE(server) << server.error().to_string();
   const HttpReply r = HttpClient((*server)->port())
                           .request("GET", "/api/info", {}, {{"Host", "printer.example:8080"}});
@@ -137,18 +129,16 @@ TEST(Server, BoundBeyondLoopbackItAnswersAnyHost) {
 }
 
 TEST(Server, JobsOfAnEarlierRunAreServedAgain) {
-  test::TempDir jobs("serve");
-  FakeTasks tasks;
+  ServerParts parts;
   ServerOptions options;
   options.port = 0;
-  options.jobs_dir = jobs.path();
   {
-    auto first = Server::start(options, tasks.runner());
+    auto first = parts.start(options);
     ASSERT_TRUE(first);
     HttpClient client((*first)->port());
     ASSERT_EQ(client.request("POST", "/api/jobs?name=part.stl", kGoodModel).status, 201u);
   }
-  auto again = Server::start(options, tasks.runner());
+  auto again = parts.start(options);
   ASSERT_TRUE(again);
   const HttpReply r = HttpClient((*again)->port()).request("GET", "/api/jobs/000001/files/model");
   EXPECT_EQ(r.status, 200u);

@@ -8,17 +8,14 @@
 #include <map>
 #include <sstream>
 
+#include "support/read_file.hpp"
+#include "support/temp_dir.hpp"
+#include "support/text_meshes.hpp"
+
 namespace strata::serve {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::uint32_t u32(const std::string& b, std::size_t at) {
   return static_cast<std::uint32_t>(static_cast<unsigned char>(b[at])) |
@@ -72,18 +69,9 @@ std::map<std::string, std::string> read_zip(const std::string& zip) {
 
 class WriteZip : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("strata-zip-" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "in" / "sub");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  void write(const fs::path& p, const std::string& text) {
-    std::ofstream(p, std::ios::binary) << text;
-  }
-  fs::path dir_;
+  void SetUp() override { fs::create_directories(dir_ / "in" / "sub"); }
+  void write(const fs::path& p, const std::string& text) { test::write_text_file(p, text); }
+  test::TempDir dir_{"zip"};
 };
 
 TEST_F(WriteZip, RoundTripsStoredAndDeflatedEntries) {
@@ -99,7 +87,7 @@ TEST_F(WriteZip, RoundTripsStoredAndDeflatedEntries) {
   EXPECT_EQ((*entries)[0].name, "stack/big.svg");
   EXPECT_EQ((*entries)[2].name, "stack/sub/t.png");
   ASSERT_TRUE(write_zip(dir_ / "out.zip", *entries));
-  const std::string zip = slurp(dir_ / "out.zip");
+  const std::string zip = test::read_file(dir_ / "out.zip");
   EXPECT_LT(zip.size(), 5000u);  // the repetitive file was deflated
   const auto files = read_zip(zip);
   EXPECT_EQ(files.at("stack/big.svg"), repetitive);
@@ -113,7 +101,7 @@ TEST_F(WriteZip, SameFilesGiveTheSameBytes) {
   ASSERT_TRUE(entries);
   ASSERT_TRUE(write_zip(dir_ / "1.zip", *entries));
   ASSERT_TRUE(write_zip(dir_ / "2.zip", *entries));
-  EXPECT_EQ(slurp(dir_ / "1.zip"), slurp(dir_ / "2.zip"));
+  EXPECT_EQ(test::read_file(dir_ / "1.zip"), test::read_file(dir_ / "2.zip"));
 }
 
 TEST_F(WriteZip, AMissingFileIsAnErrorAndLeavesNoArchive) {
@@ -126,7 +114,7 @@ TEST_F(WriteZip, AMissingFileIsAnErrorAndLeavesNoArchive) {
 
 TEST_F(WriteZip, AnEmptyListIsAnEmptyArchive) {
   ASSERT_TRUE(write_zip(dir_ / "out.zip", {}));
-  const std::string zip = slurp(dir_ / "out.zip");
+  const std::string zip = test::read_file(dir_ / "out.zip");
   EXPECT_EQ(zip.size(), 22u);
   EXPECT_TRUE(read_zip(zip).empty());
 }

@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include "../pipeline/collecting_sink_for_tests.hpp"
-#include "../slice/box_mesh_for_tests.hpp"
 #include "strata/pipeline/cancel_sink.hpp"
+#include "support/collecting_sink.hpp"
+#include "support/mesh_builders.hpp"
 
 namespace strata {
 namespace {
@@ -35,7 +35,7 @@ SliceOptions unit_cells(ShellMode mode, double shell_mm) {
 }
 
 TEST(SliceModel, AlignedBoxLayersModeOneRing) {
-  const IndexedMesh box = testing::indexed_box({0, 0, 0}, {6, 5, 7});
+  const IndexedMesh box = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {6, 5, 7});
   const Sliced r = slice_with(box, unit_cells(ShellMode::Layers, 1.0));
   EXPECT_EQ(r.sink.count(CellClass::Empty), 0u);
   EXPECT_EQ(r.sink.count(CellClass::Interior), 4u * 3 * 5);
@@ -45,7 +45,7 @@ TEST(SliceModel, AlignedBoxLayersModeOneRing) {
 }
 
 TEST(SliceModel, AlignedBoxLayersModeTwoRings) {
-  const IndexedMesh box = testing::indexed_box({0, 0, 0}, {6, 5, 7});
+  const IndexedMesh box = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {6, 5, 7});
   const Sliced r = slice_with(box, unit_cells(ShellMode::Layers, 2.0));
   EXPECT_EQ(r.sink.count(CellClass::Interior), 2u * 1 * 3);
   EXPECT_EQ(r.sink.count(CellClass::Boundary), 210u - 6);
@@ -53,7 +53,7 @@ TEST(SliceModel, AlignedBoxLayersModeTwoRings) {
 
 TEST(SliceModel, DistanceModeExcludesCentresExactlyAtThickness) {
   // Second-ring centres lie exactly 1.5 from the nearest face: "closer than t" is strict.
-  const IndexedMesh box = testing::indexed_box({0, 0, 0}, {6, 5, 7});
+  const IndexedMesh box = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {6, 5, 7});
   const Sliced r = slice_with(box, unit_cells(ShellMode::Distance, 1.5));
   EXPECT_EQ(r.sink.count(CellClass::Interior), 60u);
   const Sliced thicker = slice_with(box, unit_cells(ShellMode::Distance, 1.6));
@@ -61,14 +61,14 @@ TEST(SliceModel, DistanceModeExcludesCentresExactlyAtThickness) {
 }
 
 TEST(SliceModel, LayersArriveInOrderAndCoverTheGrid) {
-  const IndexedMesh box = testing::indexed_box({0, 0, 0}, {3, 3, 9});
+  const IndexedMesh box = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {3, 3, 9});
   const Sliced r = slice_with(box, unit_cells(ShellMode::Layers, 3.0));
   ASSERT_EQ(r.sink.order.size(), 9u);
   for (std::uint32_t k = 0; k < 9; ++k) EXPECT_EQ(r.sink.order[k], k);
 }
 
 TEST(SliceModel, BoxContoursAreOneCounterClockwiseLoopPerLayer) {
-  const IndexedMesh box = testing::indexed_box({0, 0, 0}, {4, 3, 2});
+  const IndexedMesh box = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 3, 2});
   const Sliced r = slice_with(box, unit_cells(ShellMode::Distance, 0.5));
   ASSERT_EQ(r.sink.loops.size(), 2u);
   for (const auto& loops : r.sink.loops) {
@@ -83,10 +83,10 @@ TEST(SliceModel, BoxContoursAreOneCounterClockwiseLoopPerLayer) {
 
 TEST(SliceModel, BoxWithHoleGivesOuterAndHoleLoops) {
   // A frame: outer box minus an inner box (inner box with flipped orientation).
-  IndexedMesh frame = testing::indexed_box({0, 0, 0}, {6, 6, 1});
-  IndexedMesh inner = testing::indexed_box({2, 2, 0}, {4, 4, 1});
+  IndexedMesh frame = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {6, 6, 1});
+  IndexedMesh inner = test::indexed_box_lo_hi_diagonals({2, 2, 0}, {4, 4, 1});
   for (auto& t : inner.triangles) std::swap(t[1], t[2]);
-  testing::append_mesh(frame, inner);
+  test::append_mesh(frame, inner);
   const Sliced r = slice_with(frame, unit_cells(ShellMode::Layers, 1.0));
   EXPECT_EQ(r.summary.class_counts[1] + r.summary.class_counts[2], 36u - 4u);
   ASSERT_FALSE(r.sink.loops.empty());
@@ -103,7 +103,7 @@ TEST(SliceModel, BoxWithHoleGivesOuterAndHoleLoops) {
 }
 
 TEST(SliceModel, OpenMeshReportsOpenChains) {
-  IndexedMesh box = testing::indexed_box({0, 0, 0}, {4, 4, 4});
+  IndexedMesh box = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 4, 4});
   box.triangles.erase(box.triangles.begin() + 4, box.triangles.begin() + 6);  // drop one side
   const Sliced r = slice_with(box, unit_cells(ShellMode::Distance, 0.5));
   EXPECT_EQ(r.summary.open_chains, 4u);
@@ -112,7 +112,7 @@ TEST(SliceModel, OpenMeshReportsOpenChains) {
 }
 
 TEST(SliceModel, WindingRuleFillsABoxWithAMissingSideAsTheClosedBox) {
-  const IndexedMesh closed = testing::indexed_box({0, 0, 0}, {4, 4, 4});
+  const IndexedMesh closed = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 4, 4});
   IndexedMesh open = closed;
   open.triangles.erase(open.triangles.begin() + 10, open.triangles.begin() + 12);  // the x = 4 side
   SliceOptions nonzero = unit_cells(ShellMode::Distance, 0.5);
@@ -128,7 +128,7 @@ TEST(SliceModel, WindingRuleFillsABoxWithAMissingSideAsTheClosedBox) {
 }
 
 TEST(SliceModel, ACancelledWindingRunReturnsTheCancelAndNoDiagnostics) {
-  const IndexedMesh box = testing::indexed_box({0, 0, 0}, {4, 4, 4});
+  const IndexedMesh box = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {4, 4, 4});
   SliceOptions winding = unit_cells(ShellMode::Distance, 0.5);
   winding.fill_rule = FillRule::Winding;
   const GridSpec grid = make_grid(box.bounds(), winding.grid).value();

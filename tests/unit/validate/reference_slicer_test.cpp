@@ -16,14 +16,13 @@
 #include "strata/validate/validate_model.hpp"
 #include "strata/validate/validation_json.hpp"
 #include "strata/validate/validation_text.hpp"
+#include "support/mesh_builders.hpp"
 #include "validate/reference_slicer_internal.hpp"
 
 namespace strata::validate {
 namespace {
 
-IndexedMesh box_mesh(const Vec3& min, const Vec3& max) {
-  return weld_vertices(mesh::make_box(min, max));
-}
+using test::welded_box;
 
 SliceOptions cells_of(double d, std::optional<Vec3> origin = Vec3{0, 0, 0}) {
   SliceOptions options;
@@ -99,8 +98,8 @@ TEST(ReferenceSlicer, GivesTheExactPathsPointsOnAGenericPlane) {
 
 TEST(ReferenceSlicer, SkipsANonManifoldModelAndSaysWhy) {
   // Two boxes sharing one edge: four facets around it.
-  const IndexedMesh m = box_mesh({0, 0, 0}, {2, 2, 2});
-  const IndexedMesh b = box_mesh({2, 2, 0}, {4, 4, 2});
+  const IndexedMesh m = welded_box({0, 0, 0}, {2, 2, 2});
+  const IndexedMesh b = welded_box({2, 2, 0}, {4, 4, 2});
   TriangleSoup soup;
   for (const IndexedMesh* part : {&m, &b}) {
     for (FacetIndex f = 0; f < part->triangles.size(); ++f) {
@@ -117,7 +116,7 @@ TEST(ReferenceSlicer, SkipsANonManifoldModelAndSaysWhy) {
 }
 
 TEST(ReferenceSlicer, SkipsAnOpenModel) {
-  IndexedMesh m = box_mesh({0, 0, 0}, {2, 2, 2});
+  IndexedMesh m = welded_box({0, 0, 0}, {2, 2, 2});
   m.triangles.pop_back();
   const ValidationReport r = validate(m, cells_of(1.0));
   EXPECT_FALSE(r.reference.ran);
@@ -126,7 +125,7 @@ TEST(ReferenceSlicer, SkipsAnOpenModel) {
 }
 
 TEST(ReferenceSlicer, SkipsAnInconsistentlyOrientedModel) {
-  IndexedMesh m = box_mesh({0, 0, 0}, {2, 2, 2});
+  IndexedMesh m = welded_box({0, 0, 0}, {2, 2, 2});
   std::swap(m.triangles[0][1], m.triangles[0][2]);
   const ValidationReport r = validate(m, cells_of(1.0));
   EXPECT_FALSE(r.reference.ran);
@@ -136,7 +135,7 @@ TEST(ReferenceSlicer, SkipsAnInconsistentlyOrientedModel) {
 TEST(ReferenceSlicer, SkipsAModelOverTheFacetCap) {
   ValidateOptions vopts;
   vopts.reference_max_facets = 11;
-  const ValidationReport r = validate(box_mesh({0, 0, 0}, {2, 2, 2}), cells_of(1.0), vopts);
+  const ValidationReport r = validate(welded_box({0, 0, 0}, {2, 2, 2}), cells_of(1.0), vopts);
   EXPECT_FALSE(r.reference.ran);
   EXPECT_EQ(r.reference.skipped, ReferenceSkip::TooManyFacets);
   EXPECT_EQ(r.reference.max_facets, 11u);
@@ -146,7 +145,7 @@ TEST(ReferenceSlicer, SkipsAModelOverTheFacetCap) {
 TEST(ReferenceSlicer, IsOffWhenAskedTo) {
   ValidateOptions vopts;
   vopts.reference_slicer = false;
-  const ValidationReport r = validate(box_mesh({0, 0, 0}, {2, 2, 2}), cells_of(1.0), vopts);
+  const ValidationReport r = validate(welded_box({0, 0, 0}, {2, 2, 2}), cells_of(1.0), vopts);
   EXPECT_FALSE(r.reference.ran);
   EXPECT_EQ(r.reference.skipped, ReferenceSkip::Off);
 }
@@ -171,7 +170,7 @@ TEST(ReferenceSlicer, CountsALayerWhosePlaneHoldsAVertex) {
 TEST(ReferenceSlicer, CountsTheBottomFacetOnAPlaneAsALegitimateDifference) {
   // The bottom face z = 0.5 lies on the plane of layer 0: CGAL returns its outline, strata counts
   // its vertices above the plane and sees nothing there.
-  const ValidationReport r = validate(box_mesh({0, 0, 0.5}, {3, 2, 3}), cells_of(1.0));
+  const ValidationReport r = validate(welded_box({0, 0, 0.5}, {3, 2, 3}), cells_of(1.0));
   const ReferenceSlicerFigures& f = r.reference;
   ASSERT_TRUE(f.ran) << f.reason;
   ASSERT_EQ(f.layers.size(), 3u);
@@ -189,7 +188,7 @@ TEST(ReferenceSlicer, CountsTheBottomFacetOnAPlaneAsALegitimateDifference) {
 TEST(ReferenceSlicer, AgreesWhereTheTopFacetLiesOnAPlane) {
   // The top face z = 2.5 lies on the plane of layer 2: CGAL orients its outline by the side
   // faces below it, strata sees the section just below the plane: the same rectangle.
-  const ValidationReport r = validate(box_mesh({0, 0, 0}, {3, 2, 2.5}), cells_of(1.0));
+  const ValidationReport r = validate(welded_box({0, 0, 0}, {3, 2, 2.5}), cells_of(1.0));
   const ReferenceSlicerFigures& f = r.reference;
   ASSERT_TRUE(f.ran) << f.reason;
   ASSERT_EQ(f.layers.size(), 3u);
@@ -200,7 +199,7 @@ TEST(ReferenceSlicer, AgreesWhereTheTopFacetLiesOnAPlane) {
 }
 
 TEST(ReferenceSlicer, GivesACounterClockwiseLoopAroundTheMaterial) {
-  const IndexedMesh m = box_mesh({0, 0, 0}, {2, 3, 2});
+  const IndexedMesh m = welded_box({0, 0, 0}, {2, 3, 2});
   detail::ReferenceSlicer slicer(m, 1000);
   ASSERT_TRUE(slicer.ready()) << slicer.figures().reason;
   const detail::ReferenceSection s = slicer.slice(1.25);
@@ -216,7 +215,7 @@ TEST(ReferenceSlicer, GivesACounterClockwiseLoopAroundTheMaterial) {
 }
 
 TEST(ReferenceSlicer, WritesItsSectionInTheJsonReport) {
-  const ValidationReport r = validate(box_mesh({0, 0, 0}, {3, 2, 2}), cells_of(1.0));
+  const ValidationReport r = validate(welded_box({0, 0, 0}, {3, 2, 2}), cells_of(1.0));
   const nlohmann::json j = nlohmann::json::parse(validation_json(r));
   const nlohmann::json& ref = j.at("reference_slicer");
   EXPECT_TRUE(ref.at("ran").get<bool>());
@@ -240,7 +239,7 @@ TEST(ReferenceSlicer, RefusesAModelWhoseFacetsAllRepeatACorner) {
 }
 
 TEST(ReferenceSlicer, LeavesOutAFacetWithARepeatedCornerAndSlicesTheRest) {
-  IndexedMesh m = box_mesh({0, 0, 0}, {2, 2, 2});
+  IndexedMesh m = welded_box({0, 0, 0}, {2, 2, 2});
   m.triangles.push_back({0, 1, 1});
   const ValidationReport r = validate(m, cells_of(1.0));
   ASSERT_TRUE(r.reference.ran) << r.reference.reason;

@@ -5,12 +5,13 @@
 #include <cmath>
 #include <vector>
 
-#include "strata/mesh/primitive_models.hpp"
-#include "strata/mesh/weld_vertices.hpp"
 #include "strata/slicer/slice_model.hpp"
+#include "support/mesh_builders.hpp"
 
 namespace strata::validate {
 namespace {
+
+using test::welded_box;
 
 /// Every layer of a fast-path slice, kept for hand-made comparisons.
 struct SlicedLayers final : LayerSink {
@@ -32,16 +33,9 @@ struct SlicedLayers final : LayerSink {
   std::vector<HatchSegment> hatches;
 };
 
-IndexedMesh box_mesh(const Vec3& min, const Vec3& max) {
-  return weld_vertices(mesh::make_box(min, max));
-}
-
-IndexedMesh join(const IndexedMesh& a, const IndexedMesh& b) {
-  IndexedMesh m = a;
-  const auto offset = static_cast<VertexIndex>(m.vertices.size());
-  m.vertices.insert(m.vertices.end(), b.vertices.begin(), b.vertices.end());
-  for (auto t : b.triangles) m.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-  return m;
+IndexedMesh join(IndexedMesh a, const IndexedMesh& b) {
+  test::append_mesh(a, b);
+  return a;
 }
 
 /// A mesh sliced on the 1 mm grid from the origin, with the fast path.
@@ -75,7 +69,7 @@ struct Fixture {
 };
 
 TEST(SliceComparison, FindsNothingBetweenEqualLayers) {
-  Fixture f(box_mesh({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
+  Fixture f(welded_box({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
   const ValidationReport r = f.compare_with(0, f.fast);
   EXPECT_EQ(r.cells_differing, 0u);
   EXPECT_EQ(r.cells_compared, f.grid.cell_count());
@@ -87,7 +81,7 @@ TEST(SliceComparison, FindsNothingBetweenEqualLayers) {
 }
 
 TEST(SliceComparison, CallsAFlippedCellFarFromAnyTieUnexplained) {
-  Fixture f(box_mesh({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
+  Fixture f(welded_box({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
   SlicedLayers exact = f.fast;
   ASSERT_EQ(exact.cells[1][f.at(3, 2)], CellClass::Interior);
   exact.cells[1][f.at(3, 2)] = CellClass::Empty;
@@ -106,7 +100,7 @@ TEST(SliceComparison, CallsAFlippedCellFarFromAnyTieUnexplained) {
 
 TEST(SliceComparison, CallsACellWhoseCentreIsOnTheSurfaceNearDegenerate) {
   // The face x = 6.5 passes through the centres of column i = 6: the crossing ties the centre.
-  Fixture f(box_mesh({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
+  Fixture f(welded_box({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
   SlicedLayers exact = f.fast;
   ASSERT_EQ(exact.cells[1][f.at(6, 2)], CellClass::Empty);
   exact.cells[1][f.at(6, 2)] = CellClass::Boundary;
@@ -116,7 +110,7 @@ TEST(SliceComparison, CallsACellWhoseCentreIsOnTheSurfaceNearDegenerate) {
 }
 
 TEST(SliceComparison, CallsAShellMarkNextToASolidityDifferenceShell) {
-  Fixture f(box_mesh({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero, 0.4);
+  Fixture f(welded_box({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero, 0.4);
   SlicedLayers exact = f.fast;
   ASSERT_EQ(exact.cells[1][f.at(3, 2)], CellClass::Interior);
   exact.cells[1][f.at(3, 2)] = CellClass::Empty;     // solidity differs
@@ -129,7 +123,7 @@ TEST(SliceComparison, CallsAShellMarkNextToASolidityDifferenceShell) {
 }
 
 TEST(SliceComparison, CallsAShellMarkWithoutSolidityDifferenceUnexplained) {
-  Fixture f(box_mesh({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero, 0.4);
+  Fixture f(welded_box({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero, 0.4);
   SlicedLayers exact = f.fast;
   exact.cells[1][f.at(2, 2)] = CellClass::Boundary;
   const ValidationReport r = f.compare_with(1, exact);
@@ -138,7 +132,7 @@ TEST(SliceComparison, CallsAShellMarkWithoutSolidityDifferenceUnexplained) {
 }
 
 TEST(SliceComparison, CallsACellTheScanOffsetChangesScanOffset) {
-  Fixture f(box_mesh({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
+  Fixture f(welded_box({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
   f.options.scan_offset_mm = 0.0001;
   SliceComparison comparison(f.mesh, f.grid, f.options);
   std::vector<CellClass> without = f.fast.cells[1];
@@ -161,7 +155,7 @@ TEST(SliceComparison, CallsACellTheScanOffsetChangesScanOffset) {
 
 TEST(SliceComparison, CallsACellInAnOverlapFillRule) {
   // Under evenodd the overlap [2, 4] x [0, 4] x [0, 4] is empty; nonzero would fill it.
-  Fixture f(join(box_mesh({0, 0, 0}, {4, 4, 4}), box_mesh({2, 0, 0}, {6, 4, 4})),
+  Fixture f(join(welded_box({0, 0, 0}, {4, 4, 4}), welded_box({2, 0, 0}, {6, 4, 4})),
             FillRule::EvenOdd);
   SlicedLayers exact = f.fast;
   ASSERT_EQ(exact.cells[1][f.at(3, 2)], CellClass::Empty);
@@ -172,7 +166,7 @@ TEST(SliceComparison, CallsACellInAnOverlapFillRule) {
 }
 
 TEST(SliceComparison, MeasuresAMissingLoopAsContourDifference) {
-  Fixture f(join(box_mesh({0, 0, 0}, {2, 2, 3}), box_mesh({4, 0, 0}, {6, 2, 3})),
+  Fixture f(join(welded_box({0, 0, 0}, {2, 2, 3}), welded_box({4, 0, 0}, {6, 2, 3})),
             FillRule::NonZero);
   SlicedLayers exact = f.fast;
   ASSERT_EQ(exact.contours[1].loops.size(), 2u);
@@ -186,7 +180,7 @@ TEST(SliceComparison, MeasuresAMissingLoopAsContourDifference) {
 }
 
 TEST(SliceComparison, MeasuresTheModel) {
-  Fixture f(box_mesh({0, 0, 0}, {6, 4, 3}), FillRule::NonZero, 1.0);
+  Fixture f(welded_box({0, 0, 0}, {6, 4, 3}), FillRule::NonZero, 1.0);
   const ValidationReport r = f.compare_with(0, f.fast);
   EXPECT_DOUBLE_EQ(r.model.mesh_volume_mm3, 72.0);
   EXPECT_DOUBLE_EQ(r.model.surface_area_mm2, 2 * (24.0 + 18.0 + 12.0));
@@ -203,7 +197,7 @@ TEST(SliceComparison, MeasuresTheModel) {
 }
 
 TEST(SliceComparison, MeasuresFastLayersTheExactPathDidNotDeliverWithoutComparingThem) {
-  Fixture f(box_mesh({0, 0, 0}, {6, 4, 3}), FillRule::NonZero, 1.0);
+  Fixture f(welded_box({0, 0, 0}, {6, 4, 3}), FillRule::NonZero, 1.0);
   std::vector<std::uint32_t> told;
   f.validate_options.progress = [&](std::uint32_t done, std::uint32_t total) {
     EXPECT_EQ(total, 3u);
@@ -225,7 +219,7 @@ TEST(SliceComparison, MeasuresFastLayersTheExactPathDidNotDeliverWithoutComparin
 }
 
 TEST(SliceComparison, RefusesLayersOutsideTheGridOrOfTheWrongSize) {
-  Fixture f(box_mesh({0, 0, 0}, {6, 4, 3}), FillRule::NonZero);
+  Fixture f(welded_box({0, 0, 0}, {6, 4, 3}), FillRule::NonZero);
   SliceComparison comparison(f.mesh, f.grid, f.options);
   LayerResult beyond = f.fast.layer(2);
   beyond.layer = 3;
@@ -245,7 +239,7 @@ TEST(SliceComparison, RefusesLayersOutsideTheGridOrOfTheWrongSize) {
 }
 
 TEST(SliceComparison, CountsLoopsButLeavesContoursUncomparedWhenAskedTo) {
-  Fixture f(join(box_mesh({0, 0, 0}, {2, 2, 3}), box_mesh({4, 0, 0}, {6, 2, 3})),
+  Fixture f(join(welded_box({0, 0, 0}, {2, 2, 3}), welded_box({4, 0, 0}, {6, 2, 3})),
             FillRule::NonZero);
   f.validate_options.compare_contours = false;
   SlicedLayers exact = f.fast;
@@ -263,7 +257,7 @@ TEST(SliceComparison, CountsLoopsButLeavesContoursUncomparedWhenAskedTo) {
 }
 
 TEST(SliceComparison, OverlaysOnlyEveryNthLayerThatDiffersAtRoundingLevel) {
-  Fixture f(box_mesh({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
+  Fixture f(welded_box({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
   f.validate_options.max_overlay_layers = 2;  // 4 layers: every 2nd is overlaid
   SlicedLayers exact = f.fast;
   for (LayerContours& layer : exact.contours) {
@@ -286,7 +280,7 @@ TEST(SliceComparison, OverlaysOnlyEveryNthLayerThatDiffersAtRoundingLevel) {
 }
 
 TEST(SliceComparison, AlwaysOverlaysALayerWhoseLoopCountsDiffer) {
-  Fixture f(join(box_mesh({0, 0, 0}, {2, 2, 3}), box_mesh({4, 0, 0}, {6, 2, 3})),
+  Fixture f(join(welded_box({0, 0, 0}, {2, 2, 3}), welded_box({4, 0, 0}, {6, 2, 3})),
             FillRule::NonZero);
   f.validate_options.max_overlay_layers = 1;  // every 3rd layer only, unless it differs
   SlicedLayers exact = f.fast;
@@ -297,7 +291,7 @@ TEST(SliceComparison, AlwaysOverlaysALayerWhoseLoopCountsDiffer) {
 }
 
 TEST(SliceComparison, ListsAtMostTheLimitOfDifferingCellsAndCountsThemAll) {
-  Fixture f(box_mesh({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
+  Fixture f(welded_box({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
   f.validate_options.max_listed_cells = 2;
   SlicedLayers exact = f.fast;
   for (std::uint32_t i = 2; i <= 4; ++i) exact.cells[1][f.at(i, 2)] = CellClass::Empty;
@@ -311,7 +305,7 @@ TEST(SliceComparison, ListsAtMostTheLimitOfDifferingCellsAndCountsThemAll) {
 
 TEST(SliceComparison, CallsACellInTheRowOfAnEdgeEndNearDegenerate) {
   // The face y = 4.5 holds the centres of row j = 4: the section's corners lie on its scanline.
-  Fixture f(box_mesh({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
+  Fixture f(welded_box({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
   SlicedLayers exact = f.fast;
   exact.cells[1][f.at(3, 4)] = CellClass::Empty;
   exact.cells[1][f.at(4, 4)] = CellClass::Empty;
@@ -323,7 +317,7 @@ TEST(SliceComparison, CallsACellInTheRowOfAnEdgeEndNearDegenerate) {
 
 TEST(SliceComparison, CallsACellInALayerWhosePlaneHoldsAVertexNearDegenerate) {
   // The top z = 2.5 is the plane of layer 2: the top facets' vertices lie in it.
-  Fixture f(box_mesh({0, 0, 0}, {6.5, 4.5, 2.5}), FillRule::NonZero);
+  Fixture f(welded_box({0, 0, 0}, {6.5, 4.5, 2.5}), FillRule::NonZero);
   ASSERT_EQ(f.grid.nz, 3u);
   SlicedLayers exact = f.fast;
   // A vertex on the plane counts as above it: the sides cross the plane, the layer is solid.
@@ -337,7 +331,7 @@ TEST(SliceComparison, CallsACellInALayerWhosePlaneHoldsAVertexNearDegenerate) {
 TEST(SliceComparison, ExplainsAShellMarkByASolidityDifferenceWithinTheRingsOfLayersMode) {
   // In layers mode a change of solidity moves the shell mark by up to t / d layers (here 2).
   for (const ShellMode mode : {ShellMode::Layers, ShellMode::Distance}) {
-    Fixture f(box_mesh({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero, 2.0);
+    Fixture f(welded_box({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero, 2.0);
     f.options.shell_mode = mode;
     SlicedLayers exact = f.fast;
     ASSERT_NE(exact.cells[0][f.at(3, 2)], CellClass::Empty);
@@ -358,7 +352,7 @@ TEST(SliceComparison, ExplainsAShellMarkByASolidityDifferenceWithinTheRingsOfLay
 }
 
 TEST(SliceComparison, CountsEveryCellTheOffsetChangesAndRemembersOnlyTheLimit) {
-  Fixture f(box_mesh({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
+  Fixture f(welded_box({0, 0, 0}, {6.5, 4.5, 3.5}), FillRule::NonZero);
   f.options.scan_offset_mm = 0.0001;
   f.validate_options.max_listed_cells = 1;
   f.validate_options.max_remembered_offset_cells = 1;
@@ -389,7 +383,7 @@ TEST(SliceComparison, CountsEveryCellTheOffsetChangesAndRemembersOnlyTheLimit) {
 }
 
 TEST(SliceComparison, LeavesTheSurfaceToShellDistanceUnmeasuredBeyondTheBoundaryCellLimit) {
-  Fixture f(box_mesh({0, 0, 0}, {6, 4, 3}), FillRule::NonZero, 1.0);
+  Fixture f(welded_box({0, 0, 0}, {6, 4, 3}), FillRule::NonZero, 1.0);
   f.validate_options.max_boundary_cells = 10;
   const ValidationReport r = f.compare_with(0, f.fast);
   EXPECT_FALSE(r.model.surface_to_boundary_mm.has_value());
@@ -402,7 +396,7 @@ TEST(SliceComparison, LeavesTheSurfaceToShellDistanceUnmeasuredBeyondTheBoundary
 }
 
 TEST(SliceComparison, SamplesTheSurfaceWithinItsBudget) {
-  Fixture f(box_mesh({0, 0, 0}, {6, 4, 3}), FillRule::NonZero, 1.0);
+  Fixture f(welded_box({0, 0, 0}, {6, 4, 3}), FillRule::NonZero, 1.0);
   f.validate_options.max_surface_samples = 6;
   const ValidationReport r = f.compare_with(0, f.fast);
   ASSERT_TRUE(r.model.surface_to_boundary_mm.has_value());
@@ -413,7 +407,7 @@ TEST(SliceComparison, SamplesTheSurfaceWithinItsBudget) {
 }
 
 TEST(SliceComparison, SamplesTheShellUniformlyWithinItsBudget) {
-  Fixture f(box_mesh({0, 0, 0}, {6, 4, 3}), FillRule::NonZero, 1.0);
+  Fixture f(welded_box({0, 0, 0}, {6, 4, 3}), FillRule::NonZero, 1.0);
   f.validate_options.max_shell_samples = 3;
   const ValidationReport r = f.compare_with(0, f.fast);
   EXPECT_EQ(r.model.shell.cells, 8u);
@@ -426,7 +420,7 @@ TEST(SliceComparison, MeasuresTheShellOfALayerWithoutItsNeighboursInItsOwnPlane)
   // An 8 x 8 x 5 box with a 1 mm shell: layers 1 to 3 hold 6 x 6 interior cells, all of layers
   // 1 and 3 next to the shell below or above them, the ring of 20 in layer 2. Without layer 2,
   // layer 1 has no neighbour above and its cells are only checked in their plane (the ring).
-  Fixture f(box_mesh({0, 0, 0}, {8, 8, 5}), FillRule::NonZero, 1.0);
+  Fixture f(welded_box({0, 0, 0}, {8, 8, 5}), FillRule::NonZero, 1.0);
   const ValidationReport all = f.compare_with(0, f.fast);
   EXPECT_EQ(all.model.shell.cells, 36u + 20u + 36u);
   SliceComparison comparison(f.mesh, f.grid, f.options);

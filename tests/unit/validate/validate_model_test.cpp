@@ -7,17 +7,14 @@
 #include <stdexcept>
 #include <string>
 
-#include "strata/mesh/primitive_models.hpp"
-#include "strata/mesh/weld_vertices.hpp"
 #include "strata/validate/validation_json.hpp"
 #include "strata/validate/validation_text.hpp"
+#include "support/mesh_builders.hpp"
 
 namespace strata::validate {
 namespace {
 
-IndexedMesh box_mesh(const Vec3& min, const Vec3& max) {
-  return weld_vertices(mesh::make_box(min, max));
-}
+using test::welded_box;
 
 SliceOptions unit_cells(FillRule rule = FillRule::NonZero) {
   SliceOptions options;
@@ -38,7 +35,7 @@ ValidationReport validate(const IndexedMesh& mesh, const SliceOptions& options) 
 
 TEST(ValidateModel, FindsNoDifferenceOnABox) {
   // Faces on a cell-centre plane (x = 6.5), a scanline (y = 4.5) and a layer plane (z = 3.5).
-  const ValidationReport r = validate(box_mesh({0, 0, 0}, {6.5, 4.5, 3.5}), unit_cells());
+  const ValidationReport r = validate(welded_box({0, 0, 0}, {6.5, 4.5, 3.5}), unit_cells());
   EXPECT_FALSE(r.exact_error.has_value()) << r.exact_error->to_string();
   EXPECT_TRUE(r.cells_agree());
   EXPECT_EQ(r.cells_differing, 0u);
@@ -50,7 +47,7 @@ TEST(ValidateModel, FindsNoDifferenceOnABox) {
 }
 
 TEST(ValidateModel, MeasuresTheBox) {
-  const ValidationReport r = validate(box_mesh({0, 0, 0}, {6, 4, 3}), unit_cells());
+  const ValidationReport r = validate(welded_box({0, 0, 0}, {6, 4, 3}), unit_cells());
   EXPECT_DOUBLE_EQ(r.model.mesh_volume_mm3, 72.0);
   EXPECT_DOUBLE_EQ(r.fast.cell_volume_mm3, 72.0);
   EXPECT_DOUBLE_EQ(r.exact.cell_volume_mm3, 72.0);
@@ -65,8 +62,8 @@ TEST(ValidateModel, MeasuresTheBox) {
 }
 
 TEST(ValidateModel, AgreesOnOverlappingShellsUnderBothRules) {
-  IndexedMesh m = box_mesh({0, 0, 0}, {4, 4, 4});
-  const IndexedMesh b = box_mesh({2.5, 1.5, 0.5}, {6.5, 5.5, 3.5});
+  IndexedMesh m = welded_box({0, 0, 0}, {4, 4, 4});
+  const IndexedMesh b = welded_box({2.5, 1.5, 0.5}, {6.5, 5.5, 3.5});
   const auto offset = static_cast<VertexIndex>(m.vertices.size());
   m.vertices.insert(m.vertices.end(), b.vertices.begin(), b.vertices.end());
   for (auto t : b.triangles) m.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
@@ -83,7 +80,7 @@ TEST(ValidateModel, ListsTheCellsTheScanOffsetChanges) {
   // row 4 (6 x 3 cells) and turns the 4 interior cells of row 3 into shell cells.
   SliceOptions options = unit_cells();
   options.scan_offset_mm = 0.0001;
-  const ValidationReport r = validate(box_mesh({0, 0, 0}, {6, 4.5, 3}), options);
+  const ValidationReport r = validate(welded_box({0, 0, 0}, {6, 4.5, 3}), options);
   ASSERT_TRUE(r.scan_offset.measured);
   EXPECT_EQ(r.scan_offset.cells_changed, 22u);
   ASSERT_EQ(r.scan_offset.cells.size(), 22u);
@@ -102,7 +99,7 @@ TEST(ValidateModel, ListsTheCellsTheScanOffsetChanges) {
 }
 
 TEST(ValidateModel, RefusesTheWindingRule) {
-  const IndexedMesh m = box_mesh({0, 0, 0}, {2, 2, 2});
+  const IndexedMesh m = welded_box({0, 0, 0}, {2, 2, 2});
   const GridSpec grid = make_grid(m.bounds(), unit_cells().grid).value();
   SliceOptions options = unit_cells();
   options.fill_rule = FillRule::Winding;
@@ -114,7 +111,7 @@ TEST(ValidateModel, RefusesTheWindingRule) {
 TEST(ValidateModel, StopsWithAnInternalErrorWhenTheComparisonFails) {
   // The progress callback runs inside the comparison of each layer pair; its failure stops both
   // paths, and the report is replaced by the error.
-  const IndexedMesh mesh = box_mesh({0, 0, 0}, {6, 4, 3});
+  const IndexedMesh mesh = welded_box({0, 0, 0}, {6, 4, 3});
   const GridSpec grid = make_grid(mesh.bounds(), unit_cells().grid).value();
   ValidateOptions validate_options;
   validate_options.window_layers = 1;
@@ -131,7 +128,7 @@ TEST(ValidateModel, StopsWithAnInternalErrorWhenTheComparisonFails) {
 }
 
 TEST(ValidationJson, SaysTheCellsAgree) {
-  const ValidationReport r = validate(box_mesh({0, 0, 0}, {3, 2, 2}), unit_cells());
+  const ValidationReport r = validate(welded_box({0, 0, 0}, {3, 2, 2}), unit_cells());
   const nlohmann::json j = nlohmann::json::parse(validation_json(r));
   EXPECT_EQ(j.at("verdict"), "agree");
   EXPECT_EQ(j.at("cells").at("differing"), 0);
@@ -141,7 +138,7 @@ TEST(ValidationJson, SaysTheCellsAgree) {
 }
 
 TEST(ValidationText, SaysTheCellsAgree) {
-  const ValidationReport r = validate(box_mesh({0, 0, 0}, {3, 2, 2}), unit_cells());
+  const ValidationReport r = validate(welded_box({0, 0, 0}, {3, 2, 2}), unit_cells());
   const std::string text = validation_text(r);
   EXPECT_NE(text.find("AGREE"), std::string::npos) << text;
   EXPECT_NE(text.find("exact/fast"), std::string::npos) << text;

@@ -7,10 +7,10 @@
 #include <cstdlib>
 #include <random>
 
-#include "../pipeline/collecting_sink_for_tests.hpp"
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
 #include "strata/slicer/slice_model.hpp"
+#include "support/collecting_sink.hpp"
 
 namespace strata {
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 #include <thread>
 
-#include "fake_tasks_for_tests.hpp"
 #include "strata/serve/server.hpp"
+#include "support/fake_tasks.hpp"
 #include "support/http_client.hpp"
 #include "support/temp_dir.hpp"
 
@@ -18,14 +18,34 @@ namespace strata::serve::testing {
 /// The text of a model the fake check passes (its first line starts with "solid").
 inline constexpr std::string_view kGoodModel = "solid part\nendsolid part\n";
 
+/// The body of the server's error answers: {"error": message}.
+inline nlohmann::json error_body(std::string_view message) {
+  return nlohmann::json{{"error", message}};
+}
+
+/// A fresh jobs folder (removed when destroyed) and FakeTasks, for starting servers with options
+/// exactly as a test gives them: a refused address or port, a second run over the same jobs.
+/// A server started from it must be destroyed first (declare it after this object).
+struct ServerParts {
+  /// Server::start(options, tasks.runner()), with options.jobs_dir set to `jobs` when it is empty;
+  /// every other option as given.
+  Result<std::unique_ptr<Server>> start(ServerOptions options) {
+    if (options.jobs_dir.empty()) options.jobs_dir = jobs.path();
+    return Server::start(options, tasks.runner());
+  }
+
+  test::TempDir jobs{"serve"};
+  FakeTasks tasks;
+};
+
 /// A server on 127.0.0.1 and a free port, running FakeTasks, its jobs in a fresh folder; stopped
 /// (and its folder removed) when destroyed.
-class TestServer {
+class TestServer : public ServerParts {
  public:
   explicit TestServer(ServerOptions options = {}) {
     options.port = 0;
     options.jobs_dir = jobs.path();
-    auto started = Server::start(options, tasks.runner());
+    auto started = start(options);
     if (!started) throw std::runtime_error(started.error().to_string());
     server = std::move(started).value();
   }
@@ -74,9 +94,7 @@ class TestServer {
     ADD_FAILURE() << "the slice of job " << id << " reported no progress";
   }
 
-  // In this order: the server stops before the tasks' runner and the folder go.
-  test::TempDir jobs{"serve"};
-  FakeTasks tasks;
+  // Stops before the tasks' runner and the folder (of the base) go.
   std::unique_ptr<Server> server;
 };
 

@@ -1,21 +1,22 @@
 #pragma once
 
-// Helpers of the export tests: a scratch folder, layers built by hand, running a sink over them.
+// Helpers of the export and cells tests: a scratch folder, layers built by hand, running a sink
+// over them and reading back what it wrote.
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
-#include <iterator>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "strata/pipeline/layer_sink.hpp"
+#include "support/read_file.hpp"
 #include "support/temp_dir.hpp"
 
 namespace strata::io::testing {
@@ -40,6 +41,16 @@ inline std::vector<CellClass> codes(std::initializer_list<int> values) {
   std::vector<CellClass> out;
   for (int v : values) out.push_back(code(v));
   return out;
+}
+
+/// A contour of `kind`, closed unless the kind is Open, nested `depth` loops deep.
+inline Contour loop(std::vector<Point2> points, LoopKind kind, int depth = 0) {
+  Contour c;
+  c.points = std::move(points);
+  c.is_closed = kind != LoopKind::Open;
+  c.kind = kind;
+  c.depth = depth;
+  return c;
 }
 
 /// The 5 x 3 x 2 grid of the tests: origin (-1.5, 2.25, 0.125), cells 0.5 x 0.25 x 1, shell 0.75.
@@ -85,14 +96,19 @@ inline Result<void> run_sink(LayerSink& sink, const SliceRunInfo& run,
   return sink.finish();
 }
 
-inline std::string read_file_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+/// run_sink; a test failure, with the error, when it fails.
+inline void expect_run(LayerSink& sink, const SliceRunInfo& run,
+                       const std::vector<LayerData>& layers) {
+  auto ok = run_sink(sink, run, layers);
+  EXPECT_TRUE(ok) << ok.error().to_string();
 }
 
-inline void write_file_bytes(const std::filesystem::path& path, const std::string& bytes) {
-  std::ofstream out(path, std::ios::binary);
-  out << bytes;
+/// expect_run, then the bytes of the file `written` (empty when it is missing).
+inline std::string run_and_read(LayerSink& sink, const SliceRunInfo& run,
+                                const std::vector<LayerData>& layers,
+                                const std::filesystem::path& written) {
+  expect_run(sink, run, layers);
+  return ::strata::test::read_file(written);
 }
 
 /// Every file and folder below `dir`, relative, sorted.
