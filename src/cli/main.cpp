@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   strata::cli::register_validate_command(app, runner);
   strata::cli::register_view_command(app, runner);
   strata::cli::register_serve_command(app, runner);
+  strata::cli::register_merge_command(app, runner);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
