@@ -19,5 +19,6 @@ void register_validate_command(CLI::App& app, CommandRunner& runner);
 void register_view_command(CLI::App& app, CommandRunner& runner);
 void register_serve_command(CLI::App& app, CommandRunner& runner);
 void register_merge_command(CLI::App& app, CommandRunner& runner);
+void register_plan_command(CLI::App& app, CommandRunner& runner);
 
 }  // namespace strata::cli
