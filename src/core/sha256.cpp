@@ -1,6 +1,6 @@
-#include <fmt/format.h>
-
 #include "core/sha256.hpp"
+
+#include <fmt/format.h>
 
 namespace strata::detail {
 
@@ -35,15 +35,19 @@ void Sha256::update(std::string_view bytes) {
   }
 }
 
-std::string Sha256::hex_digest() {
+std::string Sha256::hex_digest() const {
+  // The padding goes into a copy, so the message can still grow and be digested again.
+  Sha256 done = *this;
   const std::uint64_t bits = length_bytes_ * 8;
-  update(std::string_view("\x80", 1));
-  while (block_used_ != 56) update(std::string_view("\0", 1));
+  done.update(std::string_view("\x80", 1));
+  while (done.block_used_ != 56) done.update(std::string_view("\0", 1));
   std::string length(8, '\0');
   for (int i = 0; i < 8; ++i) length[i] = static_cast<char>((bits >> (56 - 8 * i)) & 0xff);
-  update(length);
+  done.update(length);
   std::string out;
-  for (const std::uint32_t word : state_) fmt::format_to(std::back_inserter(out), "{:08x}", word);
+  for (const std::uint32_t word : done.state_) {
+    fmt::format_to(std::back_inserter(out), "{:08x}", word);
+  }
   return out;
 }
 

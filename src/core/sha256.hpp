@@ -15,8 +15,8 @@ class Sha256 {
   Sha256();
   /// Appends bytes to the message.
   void update(std::string_view bytes);
-  /// The digest as 64 lower-case hex digits; the object must not be updated afterwards.
-  std::string hex_digest();
+  /// The digest of the bytes so far, as 64 lower-case hex digits.
+  std::string hex_digest() const;
 
  private:
   void compress(const unsigned char* block);

@@ -23,6 +23,12 @@ TEST(Sha256, MatchesTheStandardsVectors) {
   pieces.update("abcdbcdecdefdefgefghfghighijhijki");
   pieces.update("jkljklmklmnlmnomnopnopq");
   EXPECT_EQ(pieces.hex_digest(), two.hex_digest());
+  // Digesting does not end the message.
+  detail::Sha256 growing;
+  growing.update("ab");
+  EXPECT_EQ(growing.hex_digest(), growing.hex_digest());
+  growing.update("c");
+  EXPECT_EQ(growing.hex_digest(), abc.hex_digest());
 }
 
 TEST(SliceFingerprint, ChangesWithTheModelBytesAndTheCellOptions) {
