@@ -66,7 +66,8 @@ TEST(PlanCommand, PlannedRangesSliceAndMergeIntoTheWholeRun) {
   const auto planned = run_cli(args);
   ASSERT_EQ(planned.exit_code, 0) << planned.err;
   std::vector<std::string> merge = {"merge", "-q", "-o", (dir / "merged").string()};
-  for (const json& part : json::parse(planned.out)["parts"]) {
+  const json plan = json::parse(planned.out);
+  for (const json& part : plan["parts"]) {
     const fs::path out = dir / ("part" + part["part"].dump());
     std::vector<std::string> slice = {"slice",
                                       model.string(),
