@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <set>
 #include <string>
 #include <vector>
@@ -114,6 +115,12 @@ struct MergeCase {
   ModelCase model;
   std::vector<std::string> rule;  ///< --fill-rule and --shell-mode
 };
+
+/// The case's model and rule, so that test listings read as names, not bytes.
+void PrintTo(const MergeCase& c, std::ostream* os) {
+  *os << c.model.name;
+  for (const std::string& arg : c.rule) *os << ' ' << arg;
+}
 
 std::string case_name(const ::testing::TestParamInfo<MergeCase>& info) {
   std::string name = info.param.model.name;
