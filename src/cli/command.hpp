@@ -18,5 +18,7 @@ void register_check_command(CLI::App& app, CommandRunner& runner);
 void register_validate_command(CLI::App& app, CommandRunner& runner);
 void register_view_command(CLI::App& app, CommandRunner& runner);
 void register_serve_command(CLI::App& app, CommandRunner& runner);
+void register_merge_command(CLI::App& app, CommandRunner& runner);
+void register_plan_command(CLI::App& app, CommandRunner& runner);
 
 }  // namespace strata::cli

@@ -2,6 +2,8 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -62,10 +64,45 @@ int run_cell(const InfoOptions& o) {
   return kExitOk;
 }
 
+/// The layer range of a part (SPEC §3.1b), from the slice report beside the cells file; nothing
+/// for a whole run, a merged file, or a file without its report.
+std::optional<nlohmann::json> part_range(const std::filesystem::path& cells_file,
+                                         std::uint32_t nz) {
+  std::string name = cells_file.filename().string();
+  for (const char* ext : {".cells.txt", ".cells"}) {
+    const std::string e = ext;
+    if (name.size() > e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0) {
+      name.resize(name.size() - e.size());
+      std::ifstream in(cells_file.parent_path() / (name + ".json"), std::ios::binary);
+      if (!in) return std::nullopt;
+      const nlohmann::json report = nlohmann::json::parse(in, nullptr, false);
+      if (report.is_discarded() || !report.is_object() || !report.contains("range")) break;
+      const nlohmann::json& r = report["range"];
+      const auto whole_number = [&](const char* key) {
+        return r.contains(key) && r[key].is_number_unsigned();
+      };
+      if (!r.is_object() || !whole_number("first") || !whole_number("end") ||
+          !whole_number("nz_total")) {
+        break;
+      }
+      const auto first = r["first"].get<std::uint32_t>();
+      const auto end = r["end"].get<std::uint32_t>();
+      // A report that does not describe this file (another run's) says nothing about it.
+      if (end <= first || end - first != nz || end - first == r["nz_total"].get<std::uint32_t>()) {
+        break;
+      }
+      return r;
+    }
+  }
+  return std::nullopt;
+}
+
 int run_info(const InfoOptions& o) {
   if (!o.cell.empty()) return run_cell(o);
   auto summary = io::summarize_cells(o.file);
   if (!summary) return report_error(summary.error());
+  const std::optional<nlohmann::json> range = part_range(o.file, summary->header.grid.nz);
+  const std::uint32_t first_layer = range ? (*range)["first"].get<std::uint32_t>() : 0;
   const auto& h = summary->header;
   const GridSpec& g = h.grid;
   const auto& c = summary->class_counts;
@@ -79,6 +116,7 @@ int run_info(const InfoOptions& o) {
                  {"origin_mm", {g.x0, g.y0, g.z0}},
                  {"spacing_mm", {g.dx, g.dy, g.dz}}};
     j["shell_mm"] = h.shell_mm;
+    if (range) j["range"] = *range;
     j["cells"] = {{"empty", c[0]}, {"interior", c[1]}, {"boundary", c[2]}};
     j["solid_volume_mm3"] = static_cast<double>(c[1] + c[2]) * cell_volume;
     if (o.per_layer) {
@@ -95,6 +133,12 @@ int run_info(const InfoOptions& o) {
   out += fmt::format("origin   ({}, {}, {}) mm\n", g.x0, g.y0, g.z0);
   out += fmt::format("spacing  {} x {} x {} mm\n", g.dx, g.dy, g.dz);
   out += fmt::format("shell    {} mm\n", h.shell_mm);
+  if (range) {
+    out +=
+        fmt::format("range    layers {}..{} of the model's {} (a part; layer k here is {} + k)\n",
+                    first_layer, (*range)["end"].get<std::uint32_t>() - 1,
+                    (*range)["nz_total"].get<std::uint32_t>(), first_layer);
+  }
   out +=
       fmt::format("cells    {} empty (00), {} interior (01), {} boundary (11)\n", c[0], c[1], c[2]);
   out += fmt::format("volume   {:.6g} mm3 solid\n", static_cast<double>(c[1] + c[2]) * cell_volume);

@@ -18,7 +18,8 @@ constexpr const char* kDescription =
     "Check mesh: strata check model.stl\n"
     "Prove it:   strata validate model.stl   (fast path vs exact path, cell for cell)\n"
     "See it:     strata view model.stl       (one HTML page: 3D model, layers, sections)\n"
-    "Work in it: strata serve                (a local web app: open, slice, look, download)\n\n"
+    "Work in it: strata serve                (a local web app: open, slice, look, download)\n"
+    "In parts:   strata plan model.stl --parts 4, then slice --layers A:B, then strata merge\n\n"
     "Exit codes: 0 success, 1 bad input, 2 bad usage, 3 internal error,\n"
     "            4 validate found cells on which the fast and exact paths differ.";
 
@@ -44,6 +45,8 @@ int main(int argc, char** argv) {
   strata::cli::register_validate_command(app, runner);
   strata::cli::register_view_command(app, runner);
   strata::cli::register_serve_command(app, runner);
+  strata::cli::register_merge_command(app, runner);
+  strata::cli::register_plan_command(app, runner);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

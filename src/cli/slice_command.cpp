@@ -36,6 +36,8 @@
 #include "strata/repair/repair_log_json.hpp"
 #include "strata/repair/repair_log_text.hpp"
 #include "strata/repair/repair_mesh.hpp"
+#include "strata/slice/layer_range.hpp"
+#include "strata/slice/slice_fingerprint.hpp"
 #include "strata/slicer/slice_model.hpp"
 #include "strata/view/view_page.hpp"
 #include "strata/view/view_stack.hpp"
@@ -68,6 +70,16 @@ Result<std::set<std::string>> parse_formats(const std::string& list) {
   return formats;
 }
 
+/// The fingerprint of SPEC §3.1b: the model's bytes and every option that decides a cell, here
+/// also how the model is read (units, scale, repair) and the kernel (which makes the contours).
+Result<std::string> run_fingerprint(const SliceCommandOptions& o, const LoadedModel& m,
+                                    const SliceOptions& options) {
+  const std::string text = fmt::format(
+      "{};units={};scale={:a};repair={};fill_holes={};kernel={}", cell_options_text(options),
+      io::length_unit_name(m.scale.units), m.scale.scale, o.repair, o.fill_holes, o.kernel);
+  return slice_fingerprint(m.path, text);
+}
+
 std::string file_url(const fs::path& path) {
   std::error_code ec;
   fs::path absolute = fs::absolute(path, ec);
@@ -90,8 +102,20 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   const auto started = Clock::now();
   auto options = to_slice_options(o.slice);
   if (!options) return options.error();
-  auto formats = parse_formats(o.formats);
+  if (!o.layers.empty()) {
+    auto range = parse_layer_range(o.layers);
+    if (!range) return Error{ErrorCode::Usage, "--layers: " + range.error().message, {}};
+    options->layers = *range;
+  }
+  const bool ranged = !o.layers.empty();
+  auto formats = parse_formats(ranged && !o.formats_given ? kDefaultRangeFormats : o.formats);
   if (!formats) return formats.error();
+  if (ranged && formats->count("html")) {
+    return Error{ErrorCode::Usage,
+                 "--format html: the view page shows a whole run; merge the ranges with `strata "
+                 "merge` and run `strata view` on the merged folder",
+                 {}};
+  }
   // The report counts the cells; contour outputs alone (cli, cli-binary, svg) do not need them.
   options->always_classify = formats->count("json") > 0;
   const auto cancelled = [&] {
@@ -118,7 +142,13 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   }
   auto grid = make_grid(m.mesh.bounds(), options->grid);
   if (!grid) return about_model(grid.error(), m.path);
-  out.plan = plan_job(*grid, *formats, options->threads);
+  auto span = resolve_layer_range(options->layers, grid->nz);
+  if (!span) {
+    return about_model(Error{ErrorCode::Usage, "--layers: " + span.error().message, {}}, m.path);
+  }
+  GridSpec range_grid = *grid;
+  range_grid.nz = span->count();
+  out.plan = plan_job(range_grid, *formats, options->threads);
   out.size_warning = size_warning(m.mesh.bounds(), Vec3{grid->dx, grid->dy, grid->dz});
   if (control.planned) control.planned(out.plan, out.size_warning);
   if (cancelled()) return cancel_error;
@@ -147,11 +177,11 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   }
   if (formats->count("png")) {
     owned.push_back(io::make_png_stack_writer(dir, stem));
-    written.push_back(fmt::format("png/ ({} layers)", grid->nz));
+    written.push_back(fmt::format("png/ ({} layers)", span->count()));
   }
   if (formats->count("svg")) {
     owned.push_back(io::make_svg_writer(dir, stem));
-    written.push_back(fmt::format("svg/ ({} layers)", grid->nz));
+    written.push_back(fmt::format("svg/ ({} layers)", span->count()));
   }
   if (formats->count("cli")) {
     owned.push_back(io::make_cli_writer(dir / (stem + ".cli"), io::CliEncoding::Ascii));
@@ -213,6 +243,14 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   const double seconds_total = std::chrono::duration<double>(Clock::now() - started).count();
   auto report = slice_report_json(m, mesh_report, *options, o.kernel, out.summary, seconds_total);
   report["plan"] = nlohmann::json::parse(plan_json(out.plan));
+  if (formats->count("json")) {
+    // What `strata merge` needs to join ranges: which layers, of which run, in which outputs.
+    auto fingerprint = run_fingerprint(o, m, *options);
+    if (!fingerprint) return fail(fingerprint.error());
+    report["range"] = {{"first", span->first}, {"end", span->end}, {"nz_total", grid->nz}};
+    report["fingerprint"] = *fingerprint;
+    report["formats"] = *formats;
+  }
   if (out.repair_log) {
     report["repair"] = nlohmann::json::parse(repair::repair_log_json(*out.repair_log));
     report["repair"]["seconds"] = out.seconds_repair;
@@ -312,6 +350,10 @@ int run_slice(const SliceCommandOptions& o) {
       mesh_report.duplicate_facets.count);
   out += fmt::format("grid    {} x {} x {} cells of {} x {} x {} mm, origin ({}, {}, {})\n", g.nx,
                      g.ny, g.nz, g.dx, g.dy, g.dz, g.x0, g.y0, g.z0);
+  if (s.range.count() != g.nz) {
+    out += fmt::format("range   layers {}..{} of {} (--layers {}:{})\n", s.range.first,
+                       s.range.end - 1, g.nz, s.range.first, s.range.end);
+  }
   out += fmt::format("rule    fill {}, shell {} mm ({}), scan offset {} mm\n",
                      to_string(options.fill_rule), options.shell_mm, to_string(options.shell_mode),
                      options.scan_offset_mm);
@@ -373,10 +415,15 @@ void register_slice_command(CLI::App& app, CommandRunner& runner) {
   cmd->add_option("--kernel", options->kernel, "fast: double with exact predicates; exact: CGAL")
       ->default_val("fast")
       ->check(CLI::IsMember({"fast", "exact"}));
-  cmd->add_option("--format", options->formats,
-                  "Comma list of outputs: cells, cells-ascii, png, svg, cli, cli-binary, json, "
-                  "html (the view page, <stem>.html)")
-      ->default_val(kDefaultFormats);
+  CLI::Option* format =
+      cmd->add_option("--format", options->formats,
+                      "Comma list of outputs: cells, cells-ascii, png, svg, cli, cli-binary, json, "
+                      "html (the view page, <stem>.html); with --layers the default is "
+                      "cells,png,json")
+          ->default_val(kDefaultFormats);
+  cmd->add_option("--layers", options->layers,
+                  "Slice only layers A..B-1 of the whole model's grid (A:B, A: to the last, or K "
+                  "alone), for `strata merge`; see `strata plan`");
   cmd->add_flag("-q,--quiet", options->quiet, "Print nothing on success");
   auto* repair = cmd->add_flag("--repair", options->repair,
                                "Repair the mesh in memory before slicing (as `strata check "
@@ -385,7 +432,10 @@ void register_slice_command(CLI::App& app, CommandRunner& runner) {
   cmd->add_flag("--fill-holes", options->fill_holes, "With --repair: fill holes too")
       ->needs(repair);
   add_page_options(*cmd, options->page);
-  cmd->callback([options, &runner] { runner = [options] { return run_slice(*options); }; });
+  cmd->callback([options, format, &runner] {
+    options->formats_given = format->count() > 0;
+    runner = [options] { return run_slice(*options); };
+  });
 }
 
 }  // namespace strata::cli

@@ -20,6 +20,8 @@
 namespace strata::cli {
 
 inline constexpr const char* kDefaultFormats = "cells,png,json,html";
+/// The default outputs of a layer range: the view page shows a whole run, so it is left out.
+inline constexpr const char* kDefaultRangeFormats = "cells,png,json";
 
 /// How the view page is made, for `slice --format html` and `view`.
 struct PageOptions {
@@ -36,6 +38,8 @@ struct SliceCommandOptions {
   std::string model;
   std::string output_dir;
   std::string formats = kDefaultFormats;
+  bool formats_given = false;  ///< --format was on the command line
+  std::string layers;          ///< --layers A:B, A: or K; empty: every layer
   std::string kernel = "fast";
   SliceCliOptions slice;
   PageOptions page;

@@ -16,6 +16,7 @@
 #include "exact/exact_soup_internal.hpp"
 #include "strata/core/internal_failure.hpp"
 #include "strata/exact/slice_exact.hpp"
+#include "strata/slice/slice_float.hpp"
 
 namespace strata {
 namespace exact::detail {
@@ -155,12 +156,7 @@ ExactKernel::ExactKernel(const IndexedMesh& mesh, const GridSpec& grid, const Sl
 ExactKernel::~ExactKernel() = default;
 
 void ExactKernel::prepare_batch(std::uint32_t k0, std::uint32_t k1) {
-  std::erase_if(active_, [&](FacetIndex f) { return last_layer_[f] < k0; });
-  for (std::uint32_t k = k0; k < k1 && k < grid_.nz; ++k) {
-    for (std::uint32_t r = bucket_offsets_[k]; r < bucket_offsets_[k + 1]; ++r) {
-      active_.push_back(bucket_facets_[r]);
-    }
-  }
+  advance_active_facets(bucket_offsets_, bucket_facets_, last_layer_, k0, k1, scanned_, active_);
 }
 
 LayerGeometry ExactKernel::compute_layer(std::uint32_t k) const {

@@ -58,6 +58,7 @@ class ExactKernel final : public LayerKernel {
   std::vector<std::uint32_t> bucket_offsets_;  ///< facets by first layer (CSR), nz + 1 entries
   std::vector<FacetIndex> bucket_facets_;
   std::vector<FacetIndex> active_;
+  std::uint32_t scanned_ = 0;  ///< layers whose buckets the sweep has read
   mutable std::atomic<std::uint32_t> halfedge_layers_{0};
   mutable std::atomic<std::uint32_t> arrangement_layers_{0};
   mutable std::atomic<std::uint32_t> empty_layers_{0};

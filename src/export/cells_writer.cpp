@@ -24,6 +24,16 @@ Error reserved_code_error(std::uint32_t k, std::uint64_t index, std::uint32_t nx
                {}};
 }
 
+/// The grid a cells file of the run's layers describes (SPEC §3.1b): the whole grid's, with z0 the
+/// bottom of the first layer sent and nz the number of layers sent.
+GridSpec range_grid(const SliceRunInfo& run) {
+  const LayerSpan span = run.span();
+  GridSpec g = run.grid;
+  g.z0 = run.grid.layer_bottom(span.first);
+  g.nz = span.count();
+  return g;
+}
+
 class BinaryCellsWriter final : public detail::SingleFileSink {
  public:
   explicit BinaryCellsWriter(std::filesystem::path path) : SingleFileSink(std::move(path), kKind) {}
@@ -32,7 +42,7 @@ class BinaryCellsWriter final : public detail::SingleFileSink {
 
  protected:
   Result<void> write_header(OutputFile& out) override {
-    const GridSpec& g = run().grid;
+    const GridSpec g = range_grid(run());
     std::string header;
     header.reserve(kCellsHeaderBytes);
     // The layout: magic, four 32-bit counts (header size, nx, ny, nz), seven doubles.
@@ -79,7 +89,7 @@ class AsciiCellsWriter final : public detail::SingleFileSink {
 
  protected:
   Result<void> write_header(OutputFile& out) override {
-    const GridSpec& g = run().grid;
+    const GridSpec g = range_grid(run());
     out.write(fmt::format("{}\ngrid {} {} {}\norigin {} {} {}\nspacing {} {} {}\nshell {}\n",
                           kCellsAsciiFirstLine, g.nx, g.ny, g.nz, g.x0, g.y0, g.z0, g.dx, g.dy,
                           g.dz, run().options.shell_mm));
@@ -88,7 +98,9 @@ class AsciiCellsWriter final : public detail::SingleFileSink {
 
   Result<void> write_layer(OutputFile& out, const LayerResult& layer) override {
     const GridSpec& g = run().grid;
-    out.write(fmt::format("layer {} z={}\n", layer.layer, layer.z_mm));
+    // Indices count from the file's first layer; z is the plane of the whole grid, so that a
+    // range's layer lines are those of a whole run but for the index.
+    out.write(fmt::format("layer {} z={}\n", layer.layer - run().span().first, layer.z_mm));
     std::string line(std::size_t{g.nx} * 2 + 1, '\n');
     for (std::uint32_t j = 0; j < g.ny; ++j) {
       const CellClass* row = layer.cells.data() + std::uint64_t{j} * g.nx;

@@ -46,9 +46,11 @@ class CliWriter final : public detail::SingleFileSink {
     s += "$$VERSION/200\n";
     if (!run().model_name.empty())
       s += fmt::format("$$LABEL/{},{}\n", kPartId, one_line(run().model_name));
-    s += fmt::format("$$DIMENSION/{},{},{},{},{},{}\n", g.x0, g.y0, g.z0, g.x0 + g.nx * g.dx,
-                     g.y0 + g.ny * g.dy, g.z0 + g.nz * g.dz);
-    s += fmt::format("$$LAYERS/{}\n", g.nz);
+    // A layer range's file spans its layers alone (SPEC §3.1b).
+    const LayerSpan span = run().span();
+    s += fmt::format("$$DIMENSION/{},{},{},{},{},{}\n", g.x0, g.y0, g.layer_bottom(span.first),
+                     g.x0 + g.nx * g.dx, g.y0 + g.ny * g.dy, g.z0 + span.end * g.dz);
+    s += fmt::format("$$LAYERS/{}\n", span.count());
     // In the binary encoding the command stream starts right after the keyword.
     s += binary ? "$$HEADEREND" : "$$HEADEREND\n$$GEOMETRYSTART\n";
     out.write(s);

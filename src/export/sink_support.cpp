@@ -83,9 +83,10 @@ Result<void> SinkProgress::check_layer(const LayerResult& layer, bool needs_cell
 
 Result<void> SinkProgress::check_complete(const char* sink) const {
   if (state_ != State::Started) return internal_error(sink, "finish() without begin()");
-  if (next_layer_ != run_.grid.nz) {
-    return internal_error(sink,
-                          fmt::format("finish() after {} of {} layers", next_layer_, run_.grid.nz));
+  const LayerSpan span = run_.span();
+  if (next_layer_ != span.end) {
+    return internal_error(sink, fmt::format("finish() after {} of {} layers",
+                                            next_layer_ - span.first, span.count()));
   }
   return {};
 }

@@ -33,20 +33,20 @@ class CreatedPaths {
   std::vector<std::filesystem::path> dirs_;  ///< in creation order, parents first
 };
 
-/// Where a sink is in its life: begin, layers 0 .. nz-1 in order, finish or abort.
+/// Where a sink is in its life: begin, the layers of the run's span in order, finish or abort.
 class SinkProgress {
  public:
   enum class State { Idle, Started, Finished, Aborted };
 
   void start(const SliceRunInfo& run) {
     run_ = run;
-    next_layer_ = 0;
+    next_layer_ = run.span().first;
     state_ = State::Started;
   }
   /// Checks that `layer` is the next one and, if `needs_cells`, that it carries nx * ny cells.
   Result<void> check_layer(const LayerResult& layer, bool needs_cells, const char* sink) const;
   void layer_done() { ++next_layer_; }
-  /// Checks that every layer arrived.
+  /// Checks that every layer of the span arrived.
   Result<void> check_complete(const char* sink) const;
   Result<void> check_begin(const char* sink) const;
 

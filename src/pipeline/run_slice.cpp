@@ -76,9 +76,14 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
     thread_limit.emplace(tbb::global_control::max_allowed_parallelism,
                          static_cast<std::size_t>(options.threads));
   }
+  auto span = resolve_layer_range(options.layers, grid.nz);
+  if (!span) return span.error();
+  const std::uint32_t first = span->first;
+  const std::uint32_t end = span->end;
   SliceSummary summary;
   summary.grid = grid;
-  summary.layers.resize(grid.nz);
+  summary.range = *span;
+  summary.layers.resize(span->count());
 
   // Contour outputs alone need no cell: then neither the shell nor the classification is run.
   const bool classify =
@@ -96,8 +101,12 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
                      std::min({grid.dx, grid.dy, grid.dz}))});
   }
   const std::uint32_t reach = shell ? shell->reach_layers() : 0;
+  // A range also slices the layers around it that the shell reads (their cells are not sent),
+  // so that its cells are those of a whole run; the work is the range's plus the shell's reach.
+  const std::uint32_t lo = first > reach ? first - reach : 0;
+  const std::uint32_t hi = end + std::min(reach, grid.nz - end);
 
-  SliceRunInfo run{grid, options, {}};
+  SliceRunInfo run{grid, options, {}, *span};
   for (LayerSink* sink : sinks) {
     if (auto ok = sink->begin(run); !ok) {
       abort_all(sinks);
@@ -119,10 +128,10 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
     return it == solids.end() ? nullptr : it->second.data();
   };
 
-  std::uint32_t next_emit = 0;
+  std::uint32_t next_emit = first;
   std::vector<std::vector<CellClass>> classes;
-  for (std::uint32_t k0 = 0; k0 < grid.nz; k0 += batch) {
-    const std::uint32_t k1 = std::min(grid.nz, k0 + batch);
+  for (std::uint32_t k0 = lo; k0 < hi; k0 += batch) {
+    const std::uint32_t k1 = std::min(hi, k0 + batch);
     kernel.prepare_batch(k0, k1);
     std::vector<LayerGeometry> computed(k1 - k0);
     tbb::parallel_for(k0, k1, [&](std::uint32_t k) { computed[k - k0] = kernel.compute_layer(k); });
@@ -130,10 +139,11 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
       LayerGeometry& g = computed[k - k0];
       if (classify) solids[k] = std::move(g.fill.solid);
       g.fill.solid = {};
-      pending.emplace(k, std::move(g));
+      if (span->contains(k)) pending.emplace(k, std::move(g));
     }
     // Layers whose shell window is complete can be classified and written.
-    const std::uint32_t emit_end = k1 == grid.nz ? grid.nz : (k1 > reach ? k1 - reach : 0);
+    const std::uint32_t emit_end =
+        k1 == hi ? end : std::min(end, k1 > reach ? k1 - reach : std::uint32_t{0});
     if (emit_end <= next_emit) continue;
     classes.resize(emit_end - next_emit);
     if (classify) {
@@ -145,7 +155,7 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
       auto node = pending.extract(k);
       LayerGeometry& g = node.mapped();
       const std::vector<CellClass>& cells = classes[k - next_emit];
-      LayerStats& stats = summary.layers[k];
+      LayerStats& stats = summary.layers[k - first];
       stats.layer = k;
       stats.z_mm = grid.zk(k);
       stats.segments = g.segments;
@@ -185,7 +195,7 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
           return ok.error();
         }
       }
-      if (progress) progress(k + 1, grid.nz);
+      if (progress) progress(k + 1 - first, span->count());
     }
     next_emit = emit_end;
     // Keep only the solid layers the next classifications can still reach.
@@ -201,7 +211,8 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
   }
   add_loop_diagnostics(summary);
   if (classify) {
-    summary.class_counts[0] = grid.cell_count() - summary.class_counts[1] - summary.class_counts[2];
+    summary.class_counts[0] =
+        grid.cells_per_layer() * span->count() - summary.class_counts[1] - summary.class_counts[2];
   }
   summary.solid_volume_mm3 =
       static_cast<double>(summary.class_counts[1] + summary.class_counts[2]) * grid.dx * grid.dy *

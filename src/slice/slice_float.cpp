@@ -62,6 +62,22 @@ FacetBuckets bucket_facets_by_first_layer(const FacetLayerRanges& ranges, std::u
   return buckets;
 }
 
+void advance_active_facets(std::span<const std::uint32_t> offsets,
+                           std::span<const FacetIndex> facets, std::span<const std::uint32_t> last,
+                           std::uint32_t k0, std::uint32_t k1, std::uint32_t& scanned,
+                           std::vector<FacetIndex>& active) {
+  std::erase_if(active, [&](FacetIndex f) { return last[f] < k0; });
+  const std::uint32_t end =
+      std::min<std::uint32_t>(k1, static_cast<std::uint32_t>(offsets.size() - 1));
+  for (std::uint32_t k = scanned; k < end; ++k) {
+    for (std::uint32_t r = offsets[k]; r < offsets[k + 1]; ++r) {
+      // Facets that began in skipped layers count only if they reach this batch.
+      if (last[facets[r]] >= k0) active.push_back(facets[r]);
+    }
+  }
+  scanned = std::max(scanned, end);
+}
+
 LayerSegments slice_layer(const IndexedMesh& mesh, std::span<const FacetIndex> candidates,
                           const GridSpec& grid, std::uint32_t layer) {
   LayerSegments out;

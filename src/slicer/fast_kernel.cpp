@@ -16,13 +16,7 @@ FastKernel::FastKernel(const IndexedMesh& mesh, const GridSpec& grid, const Slic
       buckets_(bucket_facets_by_first_layer(ranges_, grid.nz)) {}
 
 void FastKernel::prepare_batch(std::uint32_t k0, std::uint32_t k1) {
-  // Drop facets that end before this batch, then add those that start in it.
-  std::erase_if(active_, [&](FacetIndex f) { return ranges_.last[f] < k0; });
-  for (std::uint32_t k = k0; k < k1; ++k) {
-    for (std::uint32_t r = buckets_.offsets[k]; r < buckets_.offsets[k + 1]; ++r) {
-      active_.push_back(buckets_.facets[r]);
-    }
-  }
+  advance_active_facets(buckets_.offsets, buckets_.facets, ranges_.last, k0, k1, scanned_, active_);
 }
 
 LayerGeometry FastKernel::compute_layer(std::uint32_t k) const {

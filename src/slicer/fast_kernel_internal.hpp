@@ -33,6 +33,7 @@ class FastKernel final : public LayerKernel {
   FacetLayerRanges ranges_;
   FacetBuckets buckets_;
   std::vector<FacetIndex> active_;  ///< facets whose layer range meets the current batch
+  std::uint32_t scanned_ = 0;       ///< layers whose buckets the sweep has read
 };
 
 }  // namespace strata::detail

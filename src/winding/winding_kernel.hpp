@@ -50,6 +50,7 @@ class WindingKernel final : public LayerKernel {
   FacetLayerRanges ranges_;
   FacetBuckets buckets_;
   std::vector<FacetIndex> active_;
+  std::uint32_t scanned_ = 0;  ///< layers whose buckets the sweep has read
   mutable std::atomic<std::uint64_t> guard_evaluations_{0};
 };
 

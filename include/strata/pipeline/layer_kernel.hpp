@@ -17,8 +17,9 @@ struct LayerGeometry {
 
 /// A slicing kernel: the fast (double + exact fallback) or the exact (CGAL) path. The pipeline
 /// calls prepare_batch(k0, k1) from one thread, then compute_layer(k) for every k in [k0, k1),
-/// possibly concurrently; batches come in increasing order and do not overlap. Either may throw:
-/// run_slice then aborts the sinks and returns Error{Internal}.
+/// possibly concurrently; batches come in increasing order and do not overlap, and may skip layers
+/// (a layer range starts past layer 0): a batch's facets include those that began below it. Either
+/// may throw: run_slice then aborts the sinks and returns Error{Internal}.
 class LayerKernel {
  public:
   virtual ~LayerKernel() = default;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -19,10 +20,15 @@ struct SliceRunInfo {
   GridSpec grid;
   SliceOptions options;
   std::string model_name;  ///< the model's file stem, used to name outputs
+  /// The layers the run sends (SPEC §3.1b), in indices of `grid`; nullopt: all of them.
+  std::optional<LayerSpan> layers;
+
+  /// The layers the sink receives: `layers`, or every layer of the grid.
+  LayerSpan span() const { return layers.value_or(LayerSpan{0, grid.nz}); }
 };
 
-/// One finished layer, handed to the sinks in increasing k. The references live until
-/// add_layer returns.
+/// One finished layer, handed to the sinks in increasing k (indices of the whole grid). The
+/// references live until add_layer returns.
 struct LayerResult {
   std::uint32_t layer = 0;  ///< k
   double z_mm = 0.0;        ///< the cutting plane, GridSpec::zk(k)

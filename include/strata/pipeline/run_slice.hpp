@@ -46,6 +46,8 @@ struct OpenChainReport {
 /// What a slice run made: counts by class, volumes, contour figures, per-layer statistics.
 struct SliceSummary {
   GridSpec grid;  ///< the grid sliced
+  /// The layers sliced (SliceOptions::layers resolved); the counts below cover these alone.
+  LayerSpan range;
   /// False when no sink needed cells and SliceOptions::always_classify was off: the class counts
   /// and the solid volume are then 0, the contours and segments as always.
   bool cells_classified = true;
@@ -59,7 +61,7 @@ struct SliceSummary {
   std::uint32_t misnested_layers = 0;      ///< layers whose loops nest without alternating
   std::uint32_t outline_layers = 0;        ///< layers whose contours are the outline
   std::uint64_t exact_fallbacks = 0;  ///< decisions the double filter handed to exact arithmetic
-  std::vector<LayerStats> layers;
+  std::vector<LayerStats> layers;     ///< one per layer of `range`, in order
   std::vector<OpenChainReport> open_chain_reports;  ///< the first 1000
   Diagnostics diagnostics;
   double seconds = 0.0;
@@ -68,10 +70,12 @@ struct SliceSummary {
 /// Reports progress: layers done out of the total.
 using ProgressCallback = std::function<void(std::uint32_t done, std::uint32_t total)>;
 
-/// The engine: runs any kernel over all layers in batches, marks the shell (on `mesh`, which the
-/// kernel slices) and streams every classified layer to the sinks in order, holding only the
-/// shell window.
-/// @return the summary; the first sink error; or Error{Internal} when the kernel, the shell step
+/// The engine: runs any kernel over the layers of options.layers (all by default) in batches,
+/// marks the shell (on `mesh`, which the kernel slices) and streams every classified layer to the
+/// sinks in order, holding only the shell window. For a range the kernel also computes the layers
+/// within the shell's reach around it, whose cells are read but not sent.
+/// @return the summary; Error{Usage} when options.layers does not fit the grid (before any sink
+///         begins); the first sink error; or Error{Internal} when the kernel, the shell step
 ///         or a sink throws, on any thread (the kernel's name() begins the message). Every sink is
 ///         aborted on any failure.
 Result<SliceSummary> run_slice(const IndexedMesh& mesh, const GridSpec& grid,

@@ -22,6 +22,11 @@ struct GridSpec {
   /// Cutting plane of layer k: z0 + (k + 0.5) * dz.
   double zk(std::uint32_t k) const { return z0 + (static_cast<double>(k) + 0.5) * dz; }
 
+  /// Bottom of layer k: z0 + k * dz (z0 itself, bit for bit, for k = 0).
+  double layer_bottom(std::uint32_t k) const {
+    return k == 0 ? z0 : z0 + static_cast<double>(k) * dz;
+  }
+
   /// nx * ny.
   std::uint64_t cells_per_layer() const { return std::uint64_t{nx} * ny; }
   /// nx * ny * nz.

@@ -32,6 +32,16 @@ struct FacetBuckets {
 /// that cross no layer.
 FacetBuckets bucket_facets_by_first_layer(const FacetLayerRanges& ranges, std::uint32_t nz);
 
+/// Moves a sweep's `active` facets on to the batch [k0, k1): drops those that end below k0 and
+/// adds those that start in the layers [scanned, k1) not yet read and reach k0; `scanned` becomes
+/// k1. The first batch may start past layer 0 (a layer range), later ones past the last.
+/// @param offsets, facets  the buckets of facets by first layer (CSR, nz + 1 offsets)
+/// @param last             every facet's last layer
+void advance_active_facets(std::span<const std::uint32_t> offsets,
+                           std::span<const FacetIndex> facets, std::span<const std::uint32_t> last,
+                           std::uint32_t k0, std::uint32_t k1, std::uint32_t& scanned,
+                           std::vector<FacetIndex>& active);
+
 /// Cuts the candidate facets with plane z = grid.zk(layer). A facet yields one segment when its
 /// vertices lie on both sides (a vertex with z == zk counts as above); horizontal facets and
 /// facets touching the plane from above yield none.

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "strata/mesh/vec3.hpp"
+#include "strata/slice/layer_range.hpp"
 
 namespace strata {
 
@@ -47,6 +48,10 @@ struct SliceOptions {
   /// false and no sink needs cells (contour outputs alone), the shell and the classification are
   /// skipped and SliceSummary::cells_classified is false: the work not asked for is not done.
   bool always_classify = true;
+  /// The layers to slice, in indices of the grid the whole model defines (SPEC §3.1b); the
+  /// default is every layer. A range decides the same cells as a whole run in its layers: the
+  /// shell step also slices the layers around it that the shell reaches, and no others.
+  LayerRange layers;
 };
 
 /// The command line's name of a fill rule: "nonzero", "evenodd", "winding".
