@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 packages=(
   build-essential cmake ninja-build pkg-config
   libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev
-  libpng-dev zlib1g-dev libfmt-dev nlohmann-json3-dev libcli11-dev
+  libpng-dev zlib1g-dev libfmt-dev nlohmann-json3-dev libcli11-dev lib3mf-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 case "${1:-}" in
