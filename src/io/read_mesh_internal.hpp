@@ -108,6 +108,12 @@ Result<TriangleSoup> read_off_bytes(std::string_view bytes, std::string_view nam
 Result<TriangleSoup> read_ply_bytes(std::string_view bytes, std::string_view name,
                                     const ReadLimits& limits);
 
+/// 3MF through lib3mf: every mesh of the build, placed and in millimetres (assemble_3mf_mesh,
+/// which also says how `scale` applies); soup.format "3mf". Errors name the file and what lib3mf
+/// or the assembly found wrong.
+Result<TriangleSoup> read_3mf_bytes(std::string_view bytes, std::string_view name,
+                                    const ReadLimits& limits, const CoordinateScale& scale);
+
 /// Polygons as the OBJ/OFF/PLY readers produce them, before triangulation.
 struct PolygonSoup {
   std::vector<std::array<double, 3>> points;
