@@ -256,9 +256,11 @@ write(T, "support_left_out.bin",
       item(2, tf(move=(25, 0, 0))))
 write(T, "singular_transform.bin",
       MM + mesh3(1, box_v, box_t) + item(1, tf((1, 0, 0, 0, 1, 0, 0, 0, 0))))
-write(T, "float_overflow.bin",
+write(T, "large_float_coordinates.bin",
       b"\x05" + mesh3f(1, [(0, 0, 0), (1e-3, 0, 0), (0, 1e38, 0), (0, 0, 3.5)], tet_t) +
       item(1, tf((3, 0, 0, 0, 3, 0, 0, 0, 3))))
+write(T, "infinite_coordinate.bin",
+      MM + mesh3f(1, [(0, 0, 0), (1, 0, 0), (0, float("inf"), 0), (0, 0, 1)], tet_t) + item(1))
 write(T, "repeated_components.bin",
       MM + mesh3(1, tet_v, tet_t) +
       b"".join(comps(k, [(k - 1, tf(move=(1, 0, 0))), (k - 1, b"\x00")]) for k in range(2, 16)) +
