@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <tuple>
@@ -62,7 +63,10 @@ std::string describe_read_error(const Lib3mfError& error) {
     case NMR_ERROR_COULDNOTREADZIPFILE:
       return fmt::format("not a 3MF file: not a zip archive, or a damaged one ({})", lib3mf);
     case NMR_ERROR_COULDNOTCREATEOPCPART:
-      return fmt::format("the 3MF package lacks its 3D model part ({})", lib3mf);
+      return fmt::format(
+          "the 3MF package lacks a part its relationships name (the 3D model?) "
+          "({})",
+          lib3mf);
     case NMR_ERROR_INVALIDMODELNODEINDEX:
     case NMR_ERROR_INVALIDMODELCOORDINATEINDICES:
       // lib3mf stops inside its XML parser and tells neither the object nor the triangle.
@@ -149,6 +153,8 @@ class Lib3mfModelReader {
 
   /// Parses the package; its warnings go to `diagnostics`.
   Result<Model3mf> read(std::string_view bytes, Diagnostics& diagnostics);
+  /// lib3mf's error code when its reader failed on the package (0 otherwise).
+  unsigned package_error() const { return package_error_; }
 
  private:
   Result<void> read_warnings(NMR::PLib3MFBase* reader, Diagnostics& diagnostics);
@@ -159,6 +165,7 @@ class Lib3mfModelReader {
 
   std::string_view name_;
   const ReadLimits& limits_;
+  unsigned package_error_ = 0;
 };
 
 Result<Model3mf> Lib3mfModelReader::read(std::string_view bytes, Diagnostics& diagnostics) {
@@ -175,8 +182,9 @@ Result<Model3mf> Lib3mfModelReader::read(std::string_view bytes, Diagnostics& di
   // lib3mf reads the buffer without writing to it; its interface is not const-correct.
   auto* data = reinterpret_cast<BYTE*>(const_cast<char*>(bytes.data()));
   if (NMR::lib3mf_reader_readfrombuffer(reader.get(), data, bytes.size()) != LIB3MF_OK) {
-    return Error{ErrorCode::BadInput, describe_read_error(last_error(reader.get())),
-                 std::string(name_)};
+    const Lib3mfError error = last_error(reader.get());
+    package_error_ = error.code;
+    return Error{ErrorCode::BadInput, describe_read_error(error), std::string(name_)};
   }
   if (auto r = read_warnings(reader.get(), diagnostics); !r) return r.error();
 
@@ -426,10 +434,32 @@ Result<void> Lib3mfModelReader::read_build(NMR::PLib3MFBase* model, Model3mf& ou
 
 }  // namespace
 
+/// Where PrusaSlicer's relationships put the package thumbnail.
+constexpr std::string_view kThumbnailPart = "Metadata/thumbnail.png";
+
 Result<TriangleSoup> read_3mf_bytes(std::string_view bytes, std::string_view name,
                                     const ReadLimits& limits, const CoordinateScale& scale) {
   Diagnostics diagnostics;
-  Result<Model3mf> model = Lib3mfModelReader(name, limits).read(bytes, diagnostics);
+  Lib3mfModelReader reader(name, limits);
+  Result<Model3mf> model = reader.read(bytes, diagnostics);
+  if (!model && reader.package_error() == NMR_ERROR_COULDNOTCREATEOPCPART) {
+    // lib3mf 1.8 opens the thumbnail the package's relationships name, and fails when it is
+    // missing, as in PrusaSlicer 2.5's command-line exports. An empty thumbnail added in memory
+    // lets it read the model; the first error stands when that does not help.
+    if (const std::optional<std::string> patched = append_empty_zip_entry(bytes, kThumbnailPart)) {
+      Diagnostics retry_diagnostics;
+      Result<Model3mf> retried = Lib3mfModelReader(name, limits).read(*patched, retry_diagnostics);
+      if (retried) {
+        model = std::move(retried);
+        diagnostics = std::move(retry_diagnostics);
+        diagnostics.push_back(Diagnostic{
+            Severity::Warning, "3mf.missing_thumbnail",
+            fmt::format("{}: the package's relationships name a thumbnail ({}) it does not "
+                        "hold; read without it",
+                        name, kThumbnailPart)});
+      }
+    }
+  }
   if (!model) return model.error();
   Result<TriangleSoup> soup = assemble_3mf_mesh(*model, name, limits, scale);
   if (!soup) return soup;

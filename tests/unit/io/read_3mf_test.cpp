@@ -206,7 +206,32 @@ TEST(Read3mf, AZipWithoutAModelPart) {
   const Error e = read_error(tmp / "empty.3mf");
   EXPECT_EQ(e.location, (tmp / "empty.3mf").string());
   EXPECT_EQ(e.message,
-            "the 3MF package lacks its 3D model part (lib3mf: Could not create OPC Part)");
+            "the 3MF package lacks a part its relationships name (the 3D model?) (lib3mf: Could "
+            "not create OPC Part)");
+}
+
+TEST(Read3mf, AMissingThumbnailTheRelationshipsNameIsAWarning) {
+  // As PrusaSlicer 2.5's command line writes them: the relationships name
+  // /Metadata/thumbnail.png, which the package does not hold.
+  const test::TempDir tmp("3mf");
+  const test::BoxMesh box = test::make_box_mesh(1, 1, 1);
+  auto parts = test::package_parts(
+      model_xml("millimeter", mesh_object_xml(1, box.vertices, box.triangles), build_item_xml(1)));
+  ASSERT_EQ(parts[1].first, "_rels/.rels");
+  const std::string thumbnail =
+      "<Relationship Target=\"/Metadata/thumbnail.png\" Id=\"rel1\" "
+      "Type=\"http://schemas.openxmlformats.org/package/2006/relationships/metadata/"
+      "thumbnail\"/>";
+  parts[1].second.insert(parts[1].second.find("</Relationships>"), thumbnail);
+  write_bytes(tmp / "no_thumbnail.3mf", test::make_zip(parts));
+  const auto soup = read_mesh(tmp / "no_thumbnail.3mf");
+  ASSERT_TRUE(soup) << soup.error().to_string();
+  EXPECT_EQ(soup->triangles.size(), 12u);
+  const Diagnostic* warning = test::find_diagnostic(*soup, "3mf.missing_thumbnail");
+  ASSERT_NE(warning, nullptr);
+  EXPECT_EQ(warning->message, (tmp / "no_thumbnail.3mf").string() +
+                                  ": the package's relationships name a thumbnail "
+                                  "(Metadata/thumbnail.png) it does not hold; read without it");
 }
 
 TEST(Read3mf, BrokenXml) {
