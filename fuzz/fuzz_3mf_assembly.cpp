@@ -12,15 +12,20 @@
 //     3  build item: object id, transform
 //   transform  1 byte k: 0 = identity; otherwise 9 bytes picking the linear part's entries from
 //              kEntries and 3 int8 translations
+// The same bytes also go, as a zip archive, through append_empty_zip_entry (the thumbnail that
+// the reader adds before it retries lib3mf), strata's other code on the 3MF path.
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <string_view>
 
 #include "fuzz_support.hpp"
 #include "io/model_3mf_internal.hpp"
+#include "io/read_mesh_internal.hpp"
 
 namespace {
 
@@ -172,8 +177,23 @@ Model3mf decode(std::string_view bytes) {
 
 }  // namespace
 
+/// An archive with the entry appended ends with an end record and holds the entry: appending it
+/// again is refused.
+void check_zip_append(std::string_view bytes) {
+  constexpr std::string_view kName = "Metadata/thumbnail.png";
+  const auto patched = strata::io::detail::append_empty_zip_entry(bytes, kName);
+  if (!patched) return;
+  const bool ends_with_end_record =
+      patched->size() >= 22 && patched->compare(patched->size() - 22, 4, "PK\x05\x06") == 0;
+  if (!ends_with_end_record || strata::io::detail::append_empty_zip_entry(*patched, kName)) {
+    std::fprintf(stderr, "fuzz check failed: an appended zip entry is not found again\n");
+    std::abort();
+  }
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view bytes = strata::fuzz::as_bytes(data, size);
+  check_zip_append(bytes);
   const Model3mf model = decode(bytes);
   const strata::io::ReadLimits limits = strata::fuzz::read_limits();
   const auto soup = strata::io::detail::assemble_3mf_mesh(model, "fuzz.3mf", limits, {});

@@ -266,6 +266,19 @@ write(T, "repeated_components.bin",
       b"".join(comps(k, [(k - 1, tf(move=(1, 0, 0))), (k - 1, b"\x00")]) for k in range(2, 16)) +
       item(15))
 write(T, "empty_build.bin", MM + mesh3(1, box_v, box_t))
+# Zip archives, for the thumbnail patch (append_empty_zip_entry) that runs on the same bytes.
+import io, zipfile
+def zip_bytes(entries, comment=b""):
+    buffer = io.BytesIO()
+    with zipfile.ZipFile(buffer, "w") as z:
+        for name, data in entries:
+            info = zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0))
+            z.writestr(info, data)
+        z.comment = comment
+    return buffer.getvalue()
+write(T, "zip_two_entries.zip", zip_bytes([("_rels/.rels", "<Relationships/>"), ("3D/3dmodel.model", "<model/>")]))
+write(T, "zip_with_thumbnail_and_comment.zip",
+      zip_bytes([("Metadata/thumbnail.png", b""), ("a", b"x")], comment=b"PK\x05\x06 in a comment"))
 PY
 
 # Compressed variants: the gzip path in front of each mesh reader.
