@@ -159,7 +159,7 @@ class Lib3mfModelReader {
  private:
   Result<void> read_warnings(NMR::PLib3MFBase* reader, Diagnostics& diagnostics);
   Result<void> read_object(NMR::PLib3MFBase* object, Model3mf::Object& out);
-  Result<void> read_mesh(NMR::PLib3MFBase* object, Model3mf::Object& out);
+  Result<void> read_mesh_object(NMR::PLib3MFBase* object, Model3mf::Object& out);
   Result<void> read_components(NMR::PLib3MFBase* object, Model3mf::Object& out);
   Result<void> read_build(NMR::PLib3MFBase* model, Model3mf& out);
 
@@ -301,10 +301,10 @@ Result<void> Lib3mfModelReader::read_object(NMR::PLib3MFBase* object, Model3mf::
     return r;
   }
   out.is_mesh = is_mesh != 0;
-  return is_mesh ? read_mesh(object, out) : read_components(object, out);
+  return is_mesh ? read_mesh_object(object, out) : read_components(object, out);
 }
 
-Result<void> Lib3mfModelReader::read_mesh(NMR::PLib3MFBase* object, Model3mf::Object& out) {
+Result<void> Lib3mfModelReader::read_mesh_object(NMR::PLib3MFBase* object, Model3mf::Object& out) {
   DWORD num_vertices = 0;
   DWORD num_triangles = 0;
   if (auto r = check(NMR::lib3mf_meshobject_getvertexcount(object, &num_vertices), object,
