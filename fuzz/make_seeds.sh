@@ -8,7 +8,7 @@ cd "$(dirname "$0")"
 root=..
 adv=$root/data/adversarial
 
-for t in fuzz_stl_binary fuzz_stl_ascii fuzz_obj fuzz_off fuzz_ply fuzz_cells; do
+for t in fuzz_stl_binary fuzz_stl_ascii fuzz_obj fuzz_off fuzz_ply fuzz_cells fuzz_3mf_assembly; do
   mkdir -p "corpus/$t"
   rm -f "corpus/$t"/seed-*
 done
@@ -207,6 +207,78 @@ write(T, "reserved_code.cells.txt", cells_ascii(2, 2, 1, [0, 2, 1, 3]))
 write(T, "missing_shell.cells.txt", "strata-cells 1\ngrid 1 1 1\norigin 0 0 0\nspacing 1 1 1\nlayer 0 z=0.5\n11\n")
 write(T, "wide_row.cells.txt", cells_ascii(40, 1, 2, ([3] + [1] * 38 + [3]) * 2))
 write(T, "short_row.cells.txt", "strata-cells 1\nshell 1\nspacing 1 1 1\norigin 0 0 0\ngrid 2 1 1\nlayer 0 z=0.5\n11\n")
+
+# The model encoding of fuzz/fuzz_3mf_assembly.cpp (see its header comment).
+T = "fuzz_3mf_assembly"
+ENTRIES = [0.0, 1.0, -1.0, 2.0, 0.5, -0.5, 3.0, -2.0]
+def i8(v):
+    return struct.pack("b", v)
+def tf(linear=None, move=(0, 0, 0)):
+    """A transform: identity, or the 9 linear entries (values of ENTRIES) and an int8 move."""
+    if linear is None and move == (0, 0, 0):
+        return b"\x00"
+    linear = linear or (1, 0, 0, 0, 1, 0, 0, 0, 1)
+    return b"\x01" + bytes(ENTRIES.index(v) for v in linear) + b"".join(i8(m) for m in move)
+def mesh3(oid, verts, tris, kind=0):
+    """A mesh object of int8 half-millimetre coordinates; kind 0 model, 1 solidsupport, 2 support."""
+    out = bytes([0, oid, kind, len(verts)]) + b"".join(i8(c) for v in verts for c in v)
+    return out + bytes([len(tris)]) + b"".join(bytes(t) for t in tris)
+def mesh3f(oid, verts, tris):
+    out = bytes([1, oid, 0, len(verts)]) + b"".join(struct.pack("<f", c) for v in verts for c in v)
+    return out + bytes([len(tris)]) + b"".join(bytes(t) for t in tris)
+def comps(oid, children):
+    return bytes([2, oid, len(children)]) + b"".join(bytes([c]) + t for c, t in children)
+def item(oid, t=b"\x00"):
+    return bytes([3, oid]) + t
+MM, INCH = b"\x01", b"\x03"
+box_v = [(20 * (i & 1), 20 * (i >> 1 & 1), 20 * (i >> 2 & 1)) for i in range(8)]
+box_t = [(0, 2, 3), (0, 3, 1), (4, 5, 7), (4, 7, 6), (0, 1, 5), (0, 5, 4), (2, 6, 7), (2, 7, 3),
+         (0, 4, 6), (0, 6, 2), (1, 3, 7), (1, 7, 5)]
+tet_v = [(0, 0, 0), (10, 0, 0), (0, 10, 0), (0, 0, 10)]
+tet_t = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
+quarter_turn = (0, -1, 0, 1, 0, 0, 0, 0, 1)
+write(T, "box.bin", MM + mesh3(1, box_v, box_t) + item(1))
+write(T, "box_in_inches_moved.bin", INCH + mesh3(1, box_v, box_t) + item(1, tf(move=(5, -3, 7))))
+write(T, "nested_components.bin",
+      MM + mesh3(1, box_v, box_t) + comps(2, [(1, tf(move=(30, 0, 0))), (1, b"\x00")]) +
+      comps(3, [(2, tf(quarter_turn)), (1, tf((2, 0, 0, 0, 2, 0, 0, 0, 2), (0, 0, 40)))]) +
+      item(3, tf(move=(0, 0, 5))))
+write(T, "mirrored_item.bin",
+      MM + mesh3(1, box_v, box_t) + item(1) + item(1, tf((-1, 0, 0, 0, 1, 0, 0, 0, 1), (-5, 0, 0))))
+write(T, "two_objects_overlapping.bin",
+      MM + mesh3(7, box_v, box_t) + mesh3(9, tet_v, tet_t) + item(9) + item(7, tf(move=(5, 5, 5))))
+write(T, "index_out_of_range.bin", MM + mesh3(1, box_v, box_t[:11] + [(1, 7, 8)]) + item(1))
+write(T, "component_cycle.bin", MM + comps(1, [(2, b"\x00")]) + comps(2, [(1, b"\x00")]) + item(1))
+write(T, "missing_object.bin", MM + mesh3(1, box_v, box_t) + item(4))
+write(T, "duplicate_id.bin", MM + mesh3(1, box_v, box_t) + mesh3(1, tet_v, tet_t) + item(1))
+write(T, "support_left_out.bin",
+      MM + mesh3(1, box_v, box_t, kind=2) + mesh3(2, box_v, box_t, kind=1) + item(1) +
+      item(2, tf(move=(25, 0, 0))))
+write(T, "singular_transform.bin",
+      MM + mesh3(1, box_v, box_t) + item(1, tf((1, 0, 0, 0, 1, 0, 0, 0, 0))))
+write(T, "large_float_coordinates.bin",
+      b"\x05" + mesh3f(1, [(0, 0, 0), (1e-3, 0, 0), (0, 1e38, 0), (0, 0, 3.5)], tet_t) +
+      item(1, tf((3, 0, 0, 0, 3, 0, 0, 0, 3))))
+write(T, "infinite_coordinate.bin",
+      MM + mesh3f(1, [(0, 0, 0), (1, 0, 0), (0, float("inf"), 0), (0, 0, 1)], tet_t) + item(1))
+write(T, "repeated_components.bin",
+      MM + mesh3(1, tet_v, tet_t) +
+      b"".join(comps(k, [(k - 1, tf(move=(1, 0, 0))), (k - 1, b"\x00")]) for k in range(2, 16)) +
+      item(15))
+write(T, "empty_build.bin", MM + mesh3(1, box_v, box_t))
+# Zip archives, for the thumbnail patch (append_empty_zip_entry) that runs on the same bytes.
+import io, zipfile
+def zip_bytes(entries, comment=b""):
+    buffer = io.BytesIO()
+    with zipfile.ZipFile(buffer, "w") as z:
+        for name, data in entries:
+            info = zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0))
+            z.writestr(info, data)
+        z.comment = comment
+    return buffer.getvalue()
+write(T, "zip_two_entries.zip", zip_bytes([("_rels/.rels", "<Relationships/>"), ("3D/3dmodel.model", "<model/>")]))
+write(T, "zip_with_thumbnail_and_comment.zip",
+      zip_bytes([("Metadata/thumbnail.png", b""), ("a", b"x")], comment=b"PK\x05\x06 in a comment"))
 PY
 
 # Compressed variants: the gzip path in front of each mesh reader.

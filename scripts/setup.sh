@@ -14,7 +14,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   help2man dpkg-dev  # the man page from --help; dpkg-shlibdeps for `cpack -G DEB`
   libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev
-  libpng-dev zlib1g-dev libfmt-dev nlohmann-json3-dev libcli11-dev
+  libpng-dev zlib1g-dev libfmt-dev nlohmann-json3-dev libcli11-dev lib3mf-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 case "${1:-}" in

@@ -83,14 +83,27 @@ bool looks_like_obj(std::string_view bytes) {
 
 Result<TriangleSoup> unsupported(std::string_view name, std::string_view what) {
   return bad_input(name, fmt::format("unsupported format: {}; strata reads STL (binary or ASCII), "
-                                     "OBJ, OFF and PLY, optionally gzip-compressed",
+                                     "OBJ, OFF, PLY (optionally gzip-compressed) and 3MF",
                                      what));
 }
 
-/// Dispatch on uncompressed bytes; `inner_name` is the name without `.gz`.
+bool starts_with_zip_magic(std::string_view bytes) {
+  return bytes.substr(0, 4) == std::string_view("PK\x03\x04", 4);
+}
+
+/// Dispatch on uncompressed bytes; `inner_name` is the name without `.gz`. A 3MF soup is in
+/// millimetres already (the file states its unit); the other formats are scaled by the caller.
 Result<TriangleSoup> read_uncompressed(std::string_view bytes, std::string_view name,
-                                       std::string_view inner_name, const ReadLimits& limits) {
+                                       std::string_view inner_name, const ReadLimits& limits,
+                                       const CoordinateScale& scale) {
   if (bytes.empty()) return bad_input(name, "empty file (0 bytes)");
+  // A 3MF file is a zip archive: its name decides, or, without an extension, its zip magic.
+  // Before the text decoding below, which would take a zip's bytes for text.
+  const std::string ext = extension_of(inner_name);
+  if (ext == ".3mf" || (ext.empty() && starts_with_zip_magic(bytes))) {
+    return detail::read_3mf_bytes(bytes, name, limits, scale);
+  }
+  if (starts_with_zip_magic(bytes)) return unsupported(name, "zip archive");
   const detail::StlBinaryLayout layout = detail::stl_binary_layout(bytes);
   // A binary STL's 80-byte header is free text: bytes that fit its size are never decoded.
   if (layout.fit != detail::StlBinaryFit::Exact &&
@@ -98,7 +111,8 @@ Result<TriangleSoup> read_uncompressed(std::string_view bytes, std::string_view 
     Result<detail::TextBytes> text = detail::decode_text_encoding(bytes, name);
     if (!text) return text.error();
     if (!text->encoding.empty()) {
-      Result<TriangleSoup> soup = read_uncompressed(text->text(bytes), name, inner_name, limits);
+      Result<TriangleSoup> soup =
+          read_uncompressed(text->text(bytes), name, inner_name, limits, scale);
       if (!soup) return soup;
       soup->diagnostics.insert(
           soup->diagnostics.begin(),
@@ -107,14 +121,9 @@ Result<TriangleSoup> read_uncompressed(std::string_view bytes, std::string_view 
       return soup;
     }
   }
-  const std::string ext = extension_of(inner_name);
-
-  if (bytes.substr(0, 4) == std::string_view("PK\x03\x04", 4)) {
-    return unsupported(name, ext == ".3mf" ? "3MF (a zip archive)" : "zip archive");
-  }
-  if (ext == ".3mf" || ext == ".amf" || ext == ".zip" || ext == ".ctm" || ext == ".step" ||
-      ext == ".stp" || ext == ".iges" || ext == ".igs" || ext == ".fbx" || ext == ".dae" ||
-      ext == ".gltf" || ext == ".glb" || ext == ".3ds" || ext == ".x3d" || ext == ".wrl") {
+  if (ext == ".amf" || ext == ".zip" || ext == ".ctm" || ext == ".step" || ext == ".stp" ||
+      ext == ".iges" || ext == ".igs" || ext == ".fbx" || ext == ".dae" || ext == ".gltf" ||
+      ext == ".glb" || ext == ".3ds" || ext == ".x3d" || ext == ".wrl") {
     return unsupported(name, fmt::format("'{}' files", ext));
   }
   if (starts_with_ply_magic(bytes)) return detail::read_ply_bytes(bytes, name, limits);
@@ -141,6 +150,8 @@ Result<TriangleSoup> read_uncompressed(std::string_view bytes, std::string_view 
 Result<void> apply_scale(TriangleSoup& soup, std::string_view name, const CoordinateScale& scale) {
   const double factor = scale.factor();
   if (factor == 1.0) return {};
+  // The 3MF reader converted from the file's own unit and applied the factor.
+  if (soup.format.starts_with("3mf")) return {};
   // STL is single precision (SPEC §2): the scaled coordinate is a float32 again.
   const bool single = soup.format.starts_with("stl");
   const double largest =
@@ -163,9 +174,9 @@ Result<void> apply_scale(TriangleSoup& soup, std::string_view name, const Coordi
   return {};
 }
 
-Result<TriangleSoup> read_unscaled(std::string_view bytes, std::string_view name,
-                                   const ReadLimits& limits) {
-  if (!detail::is_gzip(bytes)) return read_uncompressed(bytes, name, name, limits);
+Result<TriangleSoup> read_any(std::string_view bytes, std::string_view name,
+                              const ReadLimits& limits, const CoordinateScale& scale) {
+  if (!detail::is_gzip(bytes)) return read_uncompressed(bytes, name, name, limits, scale);
 
   const std::string lower = lower_ascii(name);
   std::string_view inner_name = name;
@@ -178,7 +189,7 @@ Result<TriangleSoup> read_unscaled(std::string_view bytes, std::string_view name
   if (detail::is_gzip(*inflated)) {
     return unsupported(name, "gzip inside gzip");
   }
-  Result<TriangleSoup> soup = read_uncompressed(*inflated, name, inner_name, limits);
+  Result<TriangleSoup> soup = read_uncompressed(*inflated, name, inner_name, limits, scale);
   if (!soup) {
     if (inflated->empty()) return bad_input(name, "empty file (gzip of 0 bytes)");
     return soup;
@@ -196,7 +207,7 @@ Result<TriangleSoup> read_mesh_bytes(std::string_view bytes, std::string_view na
                  fmt::format("the scale factor must be a finite number > 0, got {}", scale.scale),
                  {}};
   }
-  Result<TriangleSoup> soup = read_unscaled(bytes, name, limits);
+  Result<TriangleSoup> soup = read_any(bytes, name, limits, scale);
   if (!soup) return soup;
   if (auto scaled = apply_scale(*soup, name, scale); !scaled) return scaled.error();
   return soup;

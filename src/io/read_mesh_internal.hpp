@@ -108,6 +108,17 @@ Result<TriangleSoup> read_off_bytes(std::string_view bytes, std::string_view nam
 Result<TriangleSoup> read_ply_bytes(std::string_view bytes, std::string_view name,
                                     const ReadLimits& limits);
 
+/// `zip` with one more entry, `name`, of no bytes (stored); nullopt when `zip` is not a plain
+/// zip archive (no end record, ZIP64, several disks, a damaged central directory) or already
+/// holds an entry of that name.
+std::optional<std::string> append_empty_zip_entry(std::string_view zip, std::string_view name);
+
+/// 3MF through lib3mf: every mesh of the build, placed and in millimetres (assemble_3mf_mesh,
+/// which also says how `scale` applies); soup.format "3mf". Errors name the file and what lib3mf
+/// or the assembly found wrong.
+Result<TriangleSoup> read_3mf_bytes(std::string_view bytes, std::string_view name,
+                                    const ReadLimits& limits, const CoordinateScale& scale);
+
 /// Polygons as the OBJ/OFF/PLY readers produce them, before triangulation.
 struct PolygonSoup {
   std::vector<std::array<double, 3>> points;

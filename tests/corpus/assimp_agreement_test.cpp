@@ -37,9 +37,6 @@ constexpr KnownDifference kKnownDifferences[] = {
      "the header declares 4 faces and the file ends inside its face list, which holds a face of "
      "0 corners and a stray carriage return: bad input with the line named (SPEC §4); assimp "
      "recovers 3 faces"},
-    {"cura-resources/resources/meshes/weedo_x40.3mf", 55668, std::nullopt,
-     "3MF is not a format strata reads"},
-    {"trimesh/models/featuretype.3MF", 2208, std::nullopt, "3MF is not a format strata reads"},
     {"openscad/tests/data/amf/amf_broken.amf", 12, std::nullopt,
      "AMF is not a format strata reads"},
     {"assimp-testmodels/models/OBJ/spider.obj", 1340, 1368,

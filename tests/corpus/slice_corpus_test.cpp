@@ -22,7 +22,7 @@ constexpr std::uint64_t kMaxBytes = 5'000'000;
 bool is_mesh_format(const test::CorpusEntry& e) {
   const std::string& f = e.format;
   return f.rfind("stl", 0) == 0 || f.rfind("obj", 0) == 0 || f.rfind("off", 0) == 0 ||
-         f.rfind("ply", 0) == 0;
+         f.rfind("ply", 0) == 0 || f.rfind("3mf", 0) == 0;
 }
 
 std::vector<test::CorpusEntry> meshes() {

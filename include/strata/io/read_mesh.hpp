@@ -19,21 +19,26 @@ struct ReadLimits {
 };
 
 /// Reads a triangle mesh: STL (binary or ASCII, told apart by content, not by extension or the
-/// word `solid`), OBJ, OFF or PLY (polygons triangulated as fans), any of them gzip-compressed.
-/// STL ASCII numbers are rounded to the nearest float32 (SPEC §2); other formats are read as
-/// double. The format is decided by content first (gzip magic, `ply` magic, binary STL size,
-/// leading `solid`), then by the extension (of the name without `.gz`) for OBJ/OFF/PLY.
-/// 3MF, AMF and zip archives fail with "unsupported format".
-/// @return the soup (soup.format is "stl-binary", "stl-ascii", "obj", "off" or "ply", with "+gz"
-///         appended when compressed), with warnings for odd-but-readable input; or
+/// word `solid`), OBJ, OFF or PLY (polygons triangulated as fans), any of them gzip-compressed,
+/// or 3MF (through lib3mf: every mesh object of the build items, the build items' and the
+/// components' transforms applied, converted from the unit the file states).
+/// STL ASCII numbers are rounded to the nearest float32 (SPEC §2); 3MF coordinates are float32
+/// as lib3mf reads them, placed in double; other formats are read as double. The format is
+/// decided by content first (gzip magic, `ply` magic, binary STL size, leading `solid`), then by
+/// the extension (of the name without `.gz`); a name ending in `.3mf`, or a zip archive without
+/// extension, is read as 3MF. AMF and other zip archives fail with "unsupported format".
+/// @return the soup (soup.format is "stl-binary", "stl-ascii", "obj", "off", "ply" or "3mf", with
+///         "+gz" appended when compressed), with warnings for odd-but-readable input; or
 ///         Error{BadInput} whose location names the file and, where it applies, the line
-///         ("path:12", text formats; lines of the decompressed text for .gz) or the facet
-///         ("path: facet 7", binary STL, counted from 0), and whose message says what was wrong.
-///         A file with no triangles is an error.
+///         ("path:12", text formats; lines of the decompressed text for .gz), the facet
+///         ("path: facet 7", binary STL, counted from 0) or the 3MF object and triangle
+///         ("path: object 3 ('name'), triangle 7", counted from 0), and whose message says what
+///         was wrong. A file with no triangles is an error.
 /// @param scale  the unit of the file's coordinates and a factor: the coordinates read are
 ///               converted to millimetres (CoordinateScale); a coordinate that overflows its type
 ///               once scaled is Error{BadInput} naming the facet, a scale that is not finite and
-///               positive Error{Usage}
+///               positive Error{Usage}. A 3MF file states its own unit: only the factor applies to
+///               it, and a unit other than millimetres is Error{Usage}.
 Result<TriangleSoup> read_mesh(const std::filesystem::path& path, const ReadLimits& limits = {},
                                const CoordinateScale& scale = {});
 

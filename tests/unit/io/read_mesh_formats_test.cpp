@@ -118,16 +118,23 @@ TEST(ReadMeshGzip, CorpusStlWithSeveralSolidsInsideGzip) {
   EXPECT_NE(find_diagnostic(*soup, "stl.multiple_solids"), nullptr);
 }
 
-TEST(ReadMeshDispatch, ThreeMfZipAndAmfAreUnsupported) {
-  for (const auto& path :
-       {adversarial("not_a_mesh.3mf"), corpus_file("numpy-stl/tests/3mf/Moon.3mf"),
-        corpus_file("trimesh/models/ascii.stl.zip"),
-        corpus_file("openscad/tests/data/amf/amf_broken.amf")}) {
+TEST(ReadMeshDispatch, ZipAndAmfAreUnsupported) {
+  for (const auto& path : {corpus_file("trimesh/models/ascii.stl.zip"),
+                           corpus_file("openscad/tests/data/amf/amf_broken.amf")}) {
     const auto soup = read_mesh(path);
     ASSERT_FALSE(soup) << path;
     EXPECT_EQ(soup.error().location, path.string());
     EXPECT_TRUE(contains(soup.error().message, "unsupported format")) << soup.error().message;
   }
+}
+
+TEST(ReadMeshDispatch, ThreeMfGoesToTheThreeMfReader) {
+  const auto moon = read_mesh(corpus_file("numpy-stl/tests/3mf/Moon.3mf"));
+  ASSERT_TRUE(moon) << moon.error().to_string();
+  EXPECT_EQ(moon->format, "3mf");
+  EXPECT_EQ(moon->triangles.size(), 184u);
+  // A zip local-file header and nothing else.
+  expect_refused(adversarial("not_a_mesh.3mf"), "not a 3MF file: not a zip archive", "");
 }
 
 TEST(ReadMeshDispatch, StlContentWinsOverAWrongExtension) {

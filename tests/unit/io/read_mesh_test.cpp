@@ -25,7 +25,7 @@ namespace {
 constexpr std::string_view kObjTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 constexpr std::string_view kOffTriangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
 constexpr std::string_view kSupported =
-    "strata reads STL (binary or ASCII), OBJ, OFF and PLY, optionally gzip-compressed";
+    "strata reads STL (binary or ASCII), OBJ, OFF, PLY (optionally gzip-compressed) and 3MF";
 
 /// `bytes` as one gzip member (zlib's deflate with the gzip wrapper).
 std::string gzip(std::string_view bytes) {
@@ -55,9 +55,8 @@ std::string format_of(std::string_view bytes, std::string_view name) {
 }
 
 TEST(ReadMeshDispatch, ForeignFormatsAreRefusedByTheirExtensionWhateverTheCase) {
-  for (const std::string_view ext :
-       {".amf", ".zip", ".ctm", ".step", ".stp", ".iges", ".igs", ".fbx", ".dae", ".gltf", ".glb",
-        ".3ds", ".x3d", ".wrl", ".3mf"}) {
+  for (const std::string_view ext : {".amf", ".zip", ".ctm", ".step", ".stp", ".iges", ".igs",
+                                     ".fbx", ".dae", ".gltf", ".glb", ".3ds", ".x3d", ".wrl"}) {
     std::string name = "dir.v2/Model";
     name += ext;
     for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -71,8 +70,11 @@ TEST(ReadMeshDispatch, ZipArchivesAreRefusedByTheirMagicBytes) {
   const std::string zip("PK\x03\x04rest", 8);
   EXPECT_EQ(read_error(zip, "model.stl").message,
             fmt::format("unsupported format: zip archive; {}", kSupported));
+  // Named .3mf, or without an extension, a zip archive goes to the 3MF reader.
   EXPECT_EQ(read_error(zip, "model.3MF").message,
-            fmt::format("unsupported format: 3MF (a zip archive); {}", kSupported));
+            "not a 3MF file: not a zip archive, or a damaged one (lib3mf: Could not read ZIP "
+            "file)");
+  EXPECT_EQ(read_error(zip, "upload").message, read_error(zip, "model.3MF").message);
 }
 
 TEST(ReadMeshDispatch, XmlContentIsRefusedAsAmf) {
