@@ -3,7 +3,7 @@
 #
 # The library is static: one archive, no shared-library ABI to keep stable while strata is at
 # 0.x, and a program using it runs without libstrata at run time. Its link dependencies (CGAL's
-# GMP and MPFR, TBB, PNG, zlib, fmt, ...) are therefore part of the exported target, and
+# GMP and MPFR, TBB, PNG, zlib, fmt, lib3mf, ...) are therefore part of the exported target, and
 # strataConfig.cmake finds them again with find_dependency (cmake/strataConfig.cmake.in).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -30,6 +30,7 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/strataConfigVersion.cmake
                                  COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/strataConfig.cmake
               ${PROJECT_BINARY_DIR}/strataConfigVersion.cmake
+              ${CMAKE_CURRENT_LIST_DIR}/FindLib3MF.cmake
         DESTINATION ${STRATA_INSTALL_CMAKEDIR})
 
 install(FILES ${STRATA_MAN_PAGE} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
