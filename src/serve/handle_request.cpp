@@ -70,7 +70,7 @@ Response handle_request(const Route& route, std::string_view body, JobStore& sto
     case RouteKind::Info:
       return json_response(200, json{{"generator", "strata 0.1.0"},
                                      {"max_upload_bytes", options.max_upload_bytes},
-                                     {"formats", {".stl", ".obj", ".off", ".ply", ".gz"}}}
+                                     {"formats", {".stl", ".obj", ".off", ".ply", ".3mf", ".gz"}}}
                                     .dump());
     case RouteKind::ListJobs:
       return json_response(200, store.list_json());

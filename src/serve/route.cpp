@@ -120,14 +120,17 @@ Result<std::string> check_upload_name(std::string_view raw) {
     }
   }
   std::string_view bare = name;
-  if (lower_ends_with(bare, ".gz")) bare.remove_suffix(3);
-  // Something precedes the extension: the name does not start with '.'.
+  const bool gzipped = lower_ends_with(bare, ".gz");
+  if (gzipped) bare.remove_suffix(3);
+  // Something precedes the extension: the name does not start with '.'. A 3MF file is a zip
+  // archive already, never gzipped.
   const bool model = lower_ends_with(bare, ".stl") || lower_ends_with(bare, ".obj") ||
-                     lower_ends_with(bare, ".off") || lower_ends_with(bare, ".ply");
+                     lower_ends_with(bare, ".off") || lower_ends_with(bare, ".ply") ||
+                     (!gzipped && lower_ends_with(bare, ".3mf"));
   if (!model) {
     return Error{ErrorCode::BadInput,
-                 "not a model file name: strata reads .stl, .obj, .off and .ply files, and .gz of "
-                 "one",
+                 "not a model file name: strata reads .stl, .obj, .off, .ply and .3mf files, and "
+                 ".gz of the first four",
                  {}};
   }
   return std::string(name);

@@ -27,9 +27,10 @@ TEST(JsonApi, InfoGivesTheUploadLimitAndTheFormats) {
   const HttpReply r = client.request("GET", "/api/info");
   EXPECT_EQ(r.status, 200u);
   EXPECT_EQ(r.field("Content-Type"), "application/json");
-  EXPECT_EQ(json::parse(r.body), json({{"generator", "strata 0.1.0"},
-                                       {"max_upload_bytes", 12345},
-                                       {"formats", {".stl", ".obj", ".off", ".ply", ".gz"}}}));
+  EXPECT_EQ(json::parse(r.body),
+            json({{"generator", "strata 0.1.0"},
+                  {"max_upload_bytes", 12345},
+                  {"formats", {".stl", ".obj", ".off", ".ply", ".3mf", ".gz"}}}));
   // Every answer: not cached, not sniffed, no referrer.
   EXPECT_EQ(r.field("Server"), "strata");
   EXPECT_EQ(r.field("Cache-Control"), "no-store");
@@ -350,7 +351,8 @@ TEST(JsonApi, AnUploadNeedsAModelFileName) {
   } uploads[] = {
       {"/api/jobs", "an upload needs ?name=FILE"},
       {"/api/jobs?name=run.sh",
-       "not a model file name: strata reads .stl, .obj, .off and .ply files, and .gz of one"},
+       "not a model file name: strata reads .stl, .obj, .off, .ply and .3mf files, and .gz of the "
+       "first four"},
       {"/api/jobs?name=.stl", "the file name starts with '.'"},
       {"/api/jobs?name=a%3Bb.stl",
        "the file name may hold letters, digits, '-', '_', '.', ' ', '(' and ')' only: rename the "

@@ -89,7 +89,7 @@ TEST(PercentDecode, DecodesEscapesAndPlus) {
 TEST(CheckUploadName, KeepsModelNamesOnly) {
   EXPECT_EQ(*check_upload_name("part.STL"), "part.STL");
   EXPECT_EQ(*check_upload_name("C:\\models\\part (2).ply.gz"), "part (2).ply.gz");
-  for (const char* name : {"my_part-2.obj", "a.off", "B.PLY", "c.Stl.GZ"}) {
+  for (const char* name : {"my_part-2.obj", "a.off", "B.PLY", "c.Stl.GZ", "plate.3mf", "Cup.3MF"}) {
     EXPECT_EQ(*check_upload_name(name), name);
   }
   EXPECT_FALSE(check_upload_name("ab"));
@@ -98,6 +98,7 @@ TEST(CheckUploadName, KeepsModelNamesOnly) {
   EXPECT_FALSE(check_upload_name(".stl"));
   EXPECT_FALSE(check_upload_name(".hidden.stl"));
   EXPECT_FALSE(check_upload_name("part.stl.exe"));
+  EXPECT_FALSE(check_upload_name("plate.3mf.gz"));  // a 3MF is a zip archive already
   EXPECT_FALSE(check_upload_name("a;b.stl"));
   EXPECT_FALSE(check_upload_name(std::string(197, 'a') + ".stl"));
   EXPECT_FALSE(check_upload_name("dir/"));
@@ -106,6 +107,7 @@ TEST(CheckUploadName, KeepsModelNamesOnly) {
 TEST(StemOf, DropsTheModelExtensions) {
   EXPECT_EQ(stem_of("part.stl.gz"), "part");
   EXPECT_EQ(stem_of("a.b.obj"), "a.b");
+  EXPECT_EQ(stem_of("plate.3mf"), "plate");
   EXPECT_EQ(stem_of("part"), "part");
   EXPECT_EQ(stem_of(".stl"), ".stl");  // a leading dot is not an extension
   EXPECT_EQ(stem_of(".gz"), "model");  // nothing left: a name all the same

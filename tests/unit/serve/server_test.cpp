@@ -71,7 +71,8 @@ TEST(Server, AddModelMakesACheckedJobOfACopy) {
   ASSERT_FALSE(not_a_model);
   EXPECT_EQ(not_a_model.error().code, ErrorCode::BadInput);
   EXPECT_EQ(not_a_model.error().message,
-            "not a model file name: strata reads .stl, .obj, .off and .ply files, and .gz of one");
+            "not a model file name: strata reads .stl, .obj, .off, .ply and .3mf files, and .gz of "
+            "the first four");
   EXPECT_EQ(not_a_model.error().location, (models / "notes.txt").string());
   // Neither left a job behind.
   EXPECT_EQ(json::parse(HttpClient(s.port()).request("GET", "/api/jobs").body)["jobs"].size(), 1u);
