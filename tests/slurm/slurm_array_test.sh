@@ -12,7 +12,8 @@
 # slurmd run from a scratch folder (their keys, sockets, state, logs, configuration) on ports
 # found free, and are stopped, and the folder removed, whatever happens. It never skips: a
 # cluster that does not start fails the test with the daemons' logs.
-# Environment: STRATA_SLURM_TIMEOUT, seconds the jobs may take (default 240).
+# Environment: STRATA_SLURM_TIMEOUT, seconds the jobs may take (default 150: with the 90 s the
+# cluster may take to start and 30 s to stop, under the 300 s CTest gives the test).
 set -euo pipefail
 
 die() {
@@ -27,7 +28,7 @@ shift 3
 slice_args=("$@")  # --parts N and the slice options, as submit.sh takes them
 [[ " $* " == *" --threads "* ]] || die "give --threads T: the reports record it, so both runs need the same"
 repo="$(cd "$(dirname "$0")/../.." && pwd)"
-job_timeout="${STRATA_SLURM_TIMEOUT:-240}"
+job_timeout="${STRATA_SLURM_TIMEOUT:-150}"
 
 [ -x "$strata" ] || die "$strata: not an executable"
 [ -f "$model" ] || die "$model: no such file"
