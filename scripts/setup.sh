@@ -4,7 +4,9 @@
 # Usage: scripts/setup.sh [test | coverage | docs]
 #   test: also clang with its sanitizer and libFuzzer runtimes (the `asan` preset the test
 #         command builds), Debian's chromium (the browser tests of the view page) and
-#         assimp-utils (the reference reader of tests/corpus/assimp_agreement_test.cpp)
+#         assimp-utils (the reference reader of tests/corpus/assimp_agreement_test.cpp), and
+#         slurm-wlm, munge and iproute2 (tests/slurm/ starts a one-node Slurm cluster; `ss`
+#         finds its free ports), and time (GNU time: peak memory in tests/scale/)
 #   coverage: the same, and llvm-profdata-14 and llvm-cov-14 (scripts/coverage.sh)
 #   docs: doxygen, for the API documentation (the target strata_docs)
 set -euo pipefail
@@ -20,7 +22,7 @@ packages=(
 case "${1:-}" in
   test | sanitizers | coverage)
     # Debian 12: clang 14; the ASan, UBSan and libFuzzer runtimes are in libclang-rt-14-dev.
-    packages+=(clang libclang-rt-14-dev chromium assimp-utils)
+    packages+=(clang libclang-rt-14-dev chromium assimp-utils slurm-wlm munge iproute2 time)
     ;;&
   coverage)
     # The profile runtime is in libclang-rt-14-dev too; the tools that read profiles in llvm-14.
