@@ -6,13 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "../slice/box_mesh_for_tests.hpp"
-#include "collecting_sink_for_tests.hpp"
 #include "strata/exact/slice_exact.hpp"
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
 #include "strata/pipeline/run_slice.hpp"
 #include "strata/slicer/slice_model.hpp"
+#include "support/collecting_sink.hpp"
+#include "support/mesh_builders.hpp"
 
 namespace strata {
 namespace {
@@ -27,8 +27,8 @@ std::vector<Model> models() {
   out.push_back({"sphere", weld_vertices(mesh::make_sphere(6.0, 2))});
   out.push_back({"ring", weld_vertices(mesh::make_ring(7.0, 3.0, 9.0, 24))});
   // Two overlapping boxes: nonzero fills the union, evenodd leaves the overlap empty.
-  IndexedMesh boxes = testing::indexed_box({0, 0, 0}, {8, 6, 5});
-  testing::append_mesh(boxes, testing::indexed_box({3, 2, 2}, {11, 9, 9.5}));
+  IndexedMesh boxes = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {8, 6, 5});
+  test::append_mesh(boxes, test::indexed_box_lo_hi_diagonals({3, 2, 2}, {11, 9, 9.5}));
   out.push_back({"overlapping_boxes", std::move(boxes)});
   return out;
 }
@@ -125,7 +125,7 @@ TEST(RunSliceRange, ComputesTheRangeAndTheShellsReachAlone) {
   GridSpec grid;
   grid.nx = grid.ny = 10;
   grid.nz = 40;
-  const IndexedMesh mesh = testing::indexed_box({0, 0, 0}, {10, 10, 40});
+  const IndexedMesh mesh = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {10, 10, 40});
   for (const ShellMode mode : {ShellMode::Distance, ShellMode::Layers}) {
     SliceOptions options;
     options.shell_mode = mode;
@@ -149,7 +149,7 @@ TEST(RunSliceRange, ComputesTheRangeAndTheShellsReachAlone) {
 }
 
 TEST(RunSliceRange, RefusesARangeOutsideTheGridBeforeAnySinkBegins) {
-  const IndexedMesh mesh = testing::indexed_box({0, 0, 0}, {2, 2, 2});
+  const IndexedMesh mesh = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {2, 2, 2});
   SliceOptions options;
   options.grid.dx_mm = options.grid.dy_mm = options.grid.dz_mm = 0.5;
   const GridSpec grid = make_grid(mesh.bounds(), options.grid).value();

@@ -4,10 +4,10 @@
 
 #include <algorithm>
 
-#include "box_mesh_for_tests.hpp"
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
 #include "strata/slice/slice_float.hpp"
+#include "support/mesh_builders.hpp"
 
 namespace strata {
 namespace {
@@ -57,10 +57,10 @@ TEST(PlanLayerRanges, CrossingsAddUpToTheFacetsLayerRanges) {
 TEST(PlanLayerRanges, BalancesCrossingsNotLayerCounts) {
   // A block carrying a cylinder of 2000 wall segments: 100 layers of 8 crossings, then 16 of
   // 4000, nearly all the work.
-  IndexedMesh mesh = testing::indexed_box({0, 0, 0}, {20, 20, 50});
+  IndexedMesh mesh = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {20, 20, 50});
   const IndexedMesh dense =
       weld_vertices(mesh::translate_soup(mesh::make_cylinder(4.0, 8.0, 2000), {10, 10, 50}));
-  testing::append_mesh(mesh, dense);
+  test::append_mesh(mesh, dense);
   const GridSpec grid = grid_for(mesh, 2.0, 0.5);
   ASSERT_EQ(grid.nz, 116u);
   const auto plan = plan_layer_ranges(mesh, grid, 4);
@@ -79,7 +79,7 @@ TEST(PlanLayerRanges, BalancesCrossingsNotLayerCounts) {
 }
 
 TEST(PlanLayerRanges, RefusesMorePartsThanLayersOrNone) {
-  const IndexedMesh mesh = testing::indexed_box({0, 0, 0}, {1, 1, 2});
+  const IndexedMesh mesh = test::indexed_box_lo_hi_diagonals({0, 0, 0}, {1, 1, 2});
   const GridSpec grid = grid_for(mesh, 0.5, 0.5);
   ASSERT_EQ(grid.nz, 4u);
   EXPECT_TRUE(plan_layer_ranges(mesh, grid, 4));
