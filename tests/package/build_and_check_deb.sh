@@ -48,13 +48,25 @@ ldd "$root/usr/bin/strata" | tee "$scratch/ldd.txt"
 if grep -q 'not found' "$scratch/ldd.txt"; then exit 1; fi
 # The package names of Depends, one a line, without versions.
 depends=$(dpkg-deb --field "$deb" Depends | tr ',' '\n' | sed 's/^ *//; s/[ (].*//')
-# Every shared library the executable loads must come from a package the .deb depends on.
+# What installing the .deb brings in: Depends and, as installed here, what those depend on (a
+# library's own libraries, e.g. lib3mf1's libuuid1, are its package's dependencies, not ours).
+closure=$depends
+mapfile -t queue <<< "$depends"
+while ((${#queue[@]})); do
+  next=${queue[0]}
+  queue=("${queue[@]:1}")
+  for dependency in $(dpkg-query -W -f='${Depends},${Pre-Depends}\n' "$next" 2>/dev/null \
+    | tr ',|' '\n' | sed 's/^ *//; s/[ (:].*//' | grep -v '^$'); do
+    grep -qxF "$dependency" <<< "$closure" || { closure+=$'\n'"$dependency"; queue+=("$dependency"); }
+  done
+done
+# Every shared library the executable loads must come from a package that installing it brings.
 for library in $(awk '$2 == "=>" { print $3 }' "$scratch/ldd.txt"); do
   owner=$(dpkg -S "$library" 2>/dev/null || dpkg -S "${library#/usr}" 2>/dev/null \
     || dpkg -S "/usr$library" 2>/dev/null) || { echo "no package owns $library"; exit 1; }
   package=${owner%%:*}
-  grep -qxF "$package" <<< "$depends" \
-    || { echo "$library comes from $package, which Depends does not name"; exit 1; }
+  grep -qxF "$package" <<< "$closure" \
+    || { echo "$library comes from $package, which neither Depends nor its dependencies name"; exit 1; }
 done
 
 echo "== the packaged executable"
