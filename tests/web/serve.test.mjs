@@ -86,14 +86,10 @@ async function setOptions(page, options) {
   }
 }
 
-/** The frame of the viewer of a job, once its page is ready. */
 /** The viewer of job id: of its slice (sliced), or of the model alone before it is sliced. */
 async function viewerFrame(page, id, sliced = true) {
-  // A check or slice under the sanitizers, beside the other tests on two cores, can take longer
-  // than Playwright's default 30 s.
-  const element = await page.waitForSelector(`[data-testid="viewer-${id}"][data-sliced="${sliced}"]`, {
-    timeout: 120_000,
-  });
+  // A check or slice under the sanitizers may take long: the context allows PAGE_TIMEOUT_MS.
+  const element = await page.waitForSelector(`[data-testid="viewer-${id}"][data-sliced="${sliced}"]`);
   const frame = await element.contentFrame();
   assert.ok(frame, `no viewer frame for job ${id}`);
   await frame.waitForFunction(() => window.strataView?.ready);
@@ -126,7 +122,7 @@ describe('strata serve', { skip: cli ? false : 'STRATA_CLI is not set' }, () => 
     const options = { layer: 0.5, cell: 0.5, shell: 1.25 };
     await setOptions(page, options);
     await page.click('[data-testid="slice"]');
-    await page.waitForSelector('[data-testid="slice-done"]', { timeout: 120_000 });
+    await page.waitForSelector('[data-testid="slice-done"]');
     const id = await page.evaluate(() => window.strataServe.selected());
 
     // The viewer of strata view on the result: move the layer slider.
@@ -164,7 +160,7 @@ describe('strata serve', { skip: cli ? false : 'STRATA_CLI is not set' }, () => 
     // The first job's "done" is still on the page until the new job is selected: wait for that.
     await page.waitForFunction((first) => window.strataServe.selected() !== first, id);
     const second = await page.evaluate(() => window.strataServe.selected());
-    await page.waitForFunction(() => window.strataServe.job()?.slice?.state === 'done', null, { timeout: 120_000 });
+    await page.waitForFunction(() => window.strataServe.job()?.slice?.state === 'done');
     await page.waitForSelector('[data-testid="slice-done"]');
     assert.notEqual(second, id, 'a new parameter set is a new job');
     await page.check(`[data-testid="job-${id}"] input[type="checkbox"]`);
@@ -250,7 +246,7 @@ describe('strata serve', { skip: cli ? false : 'STRATA_CLI is not set' }, () => 
     await setOptions(page, { layer: 0.001, cell: 0.2, shell: 0.01 });
     await page.click('[data-testid="slice"]');
     const id = await page.evaluate(() => window.strataServe.selected());
-    await page.waitForFunction(() => (window.strataServe.job()?.slice.done ?? 0) > 0, null, { timeout: 120_000 });
+    await page.waitForFunction(() => (window.strataServe.job()?.slice.done ?? 0) > 0);
     await page.click('[data-testid="cancel"]');
     await page.waitForSelector('[data-testid="slice-cancelled"]');
     const status = JSON.parse((await rawRequest('GET', `/api/jobs/${id}`)).text);
