@@ -126,7 +126,6 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
   const double t = thickness_mm_;
   if (!(t > 0.0) || facets_by_zmin_.empty()) return;
   const double z = grid_.zk(k);
-  const Vec3 centre_z{0.0, 0.0, z};
   // Facets whose z-range meets [z - t, z + t]; the slab is widened a little so that rounding in
   // these double bounds can only add candidates, never drop one (the predicate decides).
   const double slack = t * 1e-9 + std::fabs(z) * 1e-15;
@@ -150,32 +149,68 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
     if (std::max({a.z, b.z, c.z}) < z_lo) continue;
     if (!slab_footprint(a, b, c, z_lo, z_hi, box)) continue;
     const detail::TriangleDistanceFilter near(a, b, c, t);
-    const double grow = t * (1.0 + 1e-9);
+    // A point closer than t to the facet is closer than sqrt(t^2 - gap^2) to it across the
+    // layer, gap being the facet's z-distance from the layer's plane: the far layers of the
+    // slab search a narrower box. The margins only widen it.
+    const double z_min = std::min({a.z, b.z, c.z});
+    const double z_max = std::max({a.z, b.z, c.z});
+    const double gap = z < z_min ? z_min - z : (z > z_max ? z - z_max : 0.0);
+    const double across = t * t - gap * gap * (1.0 - 1e-12);
+    const double grow = across > 0.0 ? std::sqrt(across) * (1.0 + 1e-9) + t * 1e-9 : t * 1e-9;
     const auto [i0_box, i1_box] =
         centre_range(grid_.x0, grid_.dx, grid_.nx, box[0] - grow, box[2] + grow);
     const auto [j0, j1] = centre_range(grid_.y0, grid_.dy, grid_.ny, box[1] - grow, box[3] + grow);
-    // Narrowing a row to the stretch near the facet's plane pays only on wide facets (a
-    // measured trade: on small facets the narrowing costs more than the tests it saves).
-    const bool narrow = (box[2] - box[0]) * inv_dx >= kNarrowFromCells;
+    // Narrowing a row to the stretch near the facet pays only on wide facets (a measured
+    // trade: on small facets it costs more than the tests it saves); a small facet's rows are
+    // tested cell by cell.
+    if ((box[2] - box[0]) * inv_dx < kNarrowFromCells) {
+      for (std::int64_t j = j0; j <= j1; ++j) {
+        const double yc = grid_.yc(static_cast<std::uint32_t>(j));
+        CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
+        for (std::int64_t i = i0_box; i <= i1_box; ++i) {
+          if (row[i] != CellClass::Interior) continue;
+          if (near.closer_than(Vec3{grid_.xc(static_cast<std::uint32_t>(i)), yc, z})) {
+            row[i] = CellClass::Boundary;
+          }
+        }
+      }
+      continue;
+    }
+    detail::TriangleDistanceFilter::RowBound bounds[detail::TriangleDistanceFilter::kMaxRowBounds];
+    const int bound_count =
+        near.row_bounds(z, box[1] - grow, box[3] + grow, box[0] - grow, box[2] + grow, bounds);
     for (std::int64_t j = j0; j <= j1; ++j) {
       const double yc = grid_.yc(static_cast<std::uint32_t>(j));
-      std::int64_t i0 = i0_box;
-      std::int64_t i1 = i1_box;
-      if (narrow) {
-        double x_lo = box[0] - grow;
-        double x_hi = box[2] + grow;
-        if (!near.plane_x_range(yc, z, x_lo, x_hi)) continue;
-        // Centres within one cell outside [x_lo, x_hi] stay (the reciprocal's rounding).
-        const double first = std::floor((x_lo - grid_.x0) * inv_dx - 0.5) - 1.0;
-        const double last = std::ceil((x_hi - grid_.x0) * inv_dx - 0.5) + 1.0;
-        i0 = std::max(i0, static_cast<std::int64_t>(std::max(first, -1.0)));
-        i1 = std::min(i1, static_cast<std::int64_t>(std::min(last, static_cast<double>(nx))));
+      double x_lo = box[0] - grow;
+      double x_hi = box[2] + grow;
+      for (int q = 0; q < bound_count; ++q) bounds[q].clip(yc, x_lo, x_hi);
+      if (!(x_lo <= x_hi)) continue;
+      // Centres within one cell outside [x_lo, x_hi] stay (the reciprocal's rounding).
+      const double first = std::floor((x_lo - grid_.x0) * inv_dx - 0.5) - 1.0;
+      const double last = std::ceil((x_hi - grid_.x0) * inv_dx - 0.5) + 1.0;
+      const std::int64_t i0 = std::max(i0_box, static_cast<std::int64_t>(std::max(first, -1.0)));
+      const std::int64_t i1 =
+          std::min(i1_box, static_cast<std::int64_t>(std::min(last, static_cast<double>(nx))));
+      CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
+      const auto closer = [&](std::int64_t i) {
+        return near.closer_than(Vec3{grid_.xc(static_cast<std::uint32_t>(i)), yc, z});
+      };
+      // The distance to a triangle is convex along the row, so the centres closer than t form
+      // one run: find its first and last interior cell by the exact test, from either end, and
+      // every interior cell between them is closer too.
+      std::int64_t first_closer = i0;
+      while (first_closer <= i1 &&
+             (row[first_closer] != CellClass::Interior || !closer(first_closer))) {
+        ++first_closer;
       }
-      for (std::int64_t i = i0; i <= i1; ++i) {
-        CellClass& cell = out[static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i)];
-        if (cell != CellClass::Interior) continue;
-        const Vec3 p{grid_.xc(static_cast<std::uint32_t>(i)), yc, centre_z.z};
-        if (near.closer_than(p)) cell = CellClass::Boundary;
+      if (first_closer > i1) continue;
+      std::int64_t last_closer = i1;
+      while (last_closer > first_closer &&
+             (row[last_closer] != CellClass::Interior || !closer(last_closer))) {
+        --last_closer;
+      }
+      for (std::int64_t i = first_closer; i <= last_closer; ++i) {
+        if (row[i] == CellClass::Interior) row[i] = CellClass::Boundary;
       }
     }
   }

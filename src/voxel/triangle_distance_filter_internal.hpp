@@ -35,7 +35,6 @@ class TriangleDistanceFilter {
     err_nn_ = 400.0 * kU * l2 * l2;
     has_plane_ = nn_ > 2.0 * err_nn_;
     len_ = std::sqrt(nn_);
-    inv_nx_ = n_.x != 0.0 ? 1.0 / n_.x : 0.0;
     if (has_plane_) {
       for (int i = 0; i < 3; ++i) {
         const Vec3 e = sub(*v[(i + 1) % 3], *v[i]);
@@ -63,15 +62,8 @@ class TriangleDistanceFilter {
     if ((bx * bx + by * by + bz * bz) * (1.0 - 16.0 * kU) > t2_ * (1.0 + 16.0 * kU))
       return kFarther;
 
-    // Accept by a point of the triangle.
-    const double p_scale = max_abs(p);
-    const Vec3 q = closest_point_estimate(p);
-    const Vec3 d = sub(p, q);
-    const double dist = std::sqrt(dot(d, d));
-    const double q_error = 16.0 * kU * (coord_scale_ + p_scale + 2.0 * scale_) * 1.7320508075688772;
-    if (dist * (1.0 + 16.0 * kU) + q_error < t_ * (1.0 - 16.0 * kU)) return kCloser;
-
     // Reject by the plane and an edge's half-plane: the triangle lies in their intersection.
+    // Tried before accepting, as most pairs the shell tests end farther than t.
     if (has_plane_) {
       const double l2 = scale_ * scale_;
       const Vec3 w = sub(p, a_);
@@ -91,35 +83,70 @@ class TriangleDistanceFilter {
       }
       if ((plane2 + edge2) * (1.0 - 64.0 * kU) > t2_ * (1.0 + 64.0 * kU)) return kFarther;
     }
+
+    // Accept by a point of the triangle.
+    const double p_scale = max_abs(p);
+    const Vec3 q = closest_point_estimate(p);
+    const Vec3 d = sub(p, q);
+    const double dist = std::sqrt(dot(d, d));
+    const double q_error = 16.0 * kU * (coord_scale_ + p_scale + 2.0 * scale_) * 1.7320508075688772;
+    if (dist * (1.0 + 16.0 * kU) + q_error < t_ * (1.0 - 16.0 * kU)) return kCloser;
     return kUndecided;
   }
 
-  /// Narrows [x_lo, x_hi] on the line (x, y, z) to the points that may lie closer than t to the
-  /// plane of the triangle, hence to the triangle; false when none may. Points left out are at
-  /// least t from the plane by a relative margin of 1e-6, far above the rounding of these few
-  /// double operations, so only pairs the exact predicate would reject are skipped.
-  bool plane_x_range(double y, double z, double& x_lo, double& x_hi) const {
-    if (!has_plane_) return true;
-    const double len = len_;
-    const double cy = n_.y * (y - a_.y);
-    const double cz = n_.z * (z - a_.z);
-    const double c = cy + cz;
-    const double w = std::fabs(n_.x) * std::max(std::fabs(x_lo - a_.x), std::fabs(x_hi - a_.x)) +
-                     std::fabs(cy) + std::fabs(cz);
-    const double r = t_ * len + 1e-6 * (w + t_ * len + len * scale_);
-    if (std::fabs(n_.x) * (x_hi - x_lo) <= 1e-6 * w) {
-      // The plane runs along the line (or nearly): one test for the whole range.
-      const double f_lo = n_.x * (x_lo - a_.x) + c;
-      return std::fabs(f_lo) < r + std::fabs(n_.x) * (x_hi - x_lo) + 1e-6 * w;
+  /// One side of a half-plane of the layer that holds every point closer than t to the
+  /// triangle: along the row y, x <= x_ref + slope (y - y_ref) + margin (upper) or
+  /// x >= x_ref + slope (y - y_ref) - margin (lower). The margin is relative, 1e-6 of every
+  /// quantity involved, far above the rounding of these few double operations, so a bound
+  /// leaves out only centres the exact predicate would reject.
+  struct RowBound {
+    double x_ref, slope, y_ref, margin;
+    bool upper;
+    /// Narrows [x_lo, x_hi] on row y.
+    void clip(double y, double& x_lo, double& x_hi) const {
+      const double x = x_ref + slope * (y - y_ref);
+      if (upper) {
+        x_hi = std::min(x_hi, x + margin);
+      } else {
+        x_lo = std::max(x_lo, x - margin);
+      }
     }
-    const double x1 = a_.x + (-r - c) * inv_nx_;
-    const double x2 = a_.x + (r - c) * inv_nx_;
-    const double lo = std::min(x1, x2);
-    const double hi = std::max(x1, x2);
-    const double widen = 1e-6 * (std::fabs(lo) + std::fabs(hi) + (hi - lo));
-    x_lo = std::max(x_lo, lo - widen);
-    x_hi = std::min(x_hi, hi + widen);
-    return x_lo <= x_hi;
+  };
+  static constexpr int kMaxRowBounds = 5;
+
+  /// The bounds on the rows of layer z with y in [y_lo, y_hi] and x in [x_lo, x_hi] (the
+  /// facet's reach): the slab of the facet's plane (two sides) and, for each edge, the plane
+  /// through it perpendicular to the facet, which a point closer than t lies less than t
+  /// outside of. Planes nearly parallel to the rows (|m.x| < 1e-3 |m|) give no bound; a facet
+  /// without a reliable plane gives none. Returns how many were written to `out`.
+  int row_bounds(double z, double y_lo, double y_hi, double x_lo, double x_hi,
+                 RowBound* out) const {
+    if (!has_plane_) return 0;
+    int count = 0;
+    const double l2 = scale_ * scale_;
+    const double err_mm = 6000.0 * kU * l2 * l2 * l2;
+    const double width = x_hi - x_lo;
+    const auto add = [&](const Vec3& m, double len, const Vec3& v, bool two_sided) {
+      if (!(std::fabs(m.x) >= 1e-3 * len)) return;
+      const double reach = t_ * len;
+      const double cz = m.z * (z - v.z);
+      const double slope = -m.y / m.x;
+      const double y_span = std::max(std::fabs(y_lo - v.y), std::fabs(y_hi - v.y));
+      const double scale = std::fabs(v.x) +
+                           (reach + std::fabs(cz) + len * scale_) / std::fabs(m.x) +
+                           std::fabs(slope) * y_span + width;
+      const double margin = 1e-6 * scale;
+      // m.x (x - v.x) + m.y (y - v.y) + cz < reach, and > -reach for the plane's other side.
+      const double x_at = v.x + (reach - cz) / m.x;
+      out[count++] = {x_at, slope, v.y, margin, m.x > 0.0};
+      if (two_sided) out[count++] = {v.x + (-reach - cz) / m.x, slope, v.y, margin, m.x < 0.0};
+    };
+    add(n_, len_, a_, true);
+    const Vec3* v[3] = {&a_, &b_, &c_};
+    for (int i = 0; i < 3; ++i) {
+      if (mm_[i] > 2.0 * err_mm) add(m_[i], std::sqrt(mm_[i]), *v[i], false);
+    }
+    return count;
   }
 
   static constexpr int kCloser = 1;
@@ -197,8 +224,7 @@ class TriangleDistanceFilter {
   Vec3 lo_, hi_;
   Vec3 e1_, e2_, n_;
   double nn_ = 0.0, err_nn_ = 0.0, scale_ = 0.0, coord_scale_ = 0.0;
-  double len_ = 0.0;     ///< |n|
-  double inv_nx_ = 0.0;  ///< 1 / n.x (its rounding is far inside plane_x_range's margin)
+  double len_ = 0.0;  ///< |n|
   bool has_plane_ = false;
   Vec3 m_[3];
   double mm_[3] = {0.0, 0.0, 0.0};

@@ -9,6 +9,14 @@ namespace {
 
 using Filter = TriangleDistanceFilter;
 
+// Narrows [lo, hi] on the row (y, z) by the filter's row bounds, as the shell does.
+bool row_range(const Filter& filter, double y, double z, double& lo, double& hi) {
+  Filter::RowBound bounds[Filter::kMaxRowBounds];
+  const int count = filter.row_bounds(z, y, y, lo, hi, bounds);
+  for (int q = 0; q < count; ++q) bounds[q].clip(y, lo, hi);
+  return lo <= hi;
+}
+
 // Whatever the filter decides must be what the exact predicate says.
 void expect_consistent(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p, double t,
                        int* decided = nullptr) {
@@ -26,7 +34,7 @@ void expect_consistent(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
     for (const double reach : {0.0, 1.0, 1e3}) {
       double lo = p.x - reach;
       double hi = p.x + reach;
-      ASSERT_TRUE(filter.plane_x_range(p.y, p.z, lo, hi))
+      ASSERT_TRUE(row_range(filter, p.y, p.z, lo, hi))
           << "p=(" << p.x << "," << p.y << "," << p.z << ") t=" << t << " reach " << reach;
       ASSERT_TRUE(lo <= p.x && p.x <= hi)
           << "p=(" << p.x << "," << p.y << "," << p.z << ") t=" << t << " reach " << reach;
@@ -118,25 +126,48 @@ TEST(TriangleDistanceFilter, AgreesForPointsPlacedNearTheThreshold) {
   }
 }
 
-TEST(TriangleDistanceFilter, PlaneRangeKeepsTheStretchOfARowNearASteepFacet) {
+TEST(TriangleDistanceFilter, RowRangeKeepsTheStretchOfARowNearASteepFacet) {
   // The facet x = 2 (normal along x), t = 0.5: along any row through its footprint only
   // x in (1.5, 2.5) can be closer, give or take the margin of 1e-6.
   const Filter filter({2, 0, 0}, {2, 10, 0}, {2, 0, 10}, 0.5);
   double lo = -100.0;
   double hi = 100.0;
-  ASSERT_TRUE(filter.plane_x_range(3.0, 4.0, lo, hi));
+  ASSERT_TRUE(row_range(filter, 3.0, 4.0, lo, hi));
   EXPECT_NEAR(lo, 1.5, 1e-3);
   EXPECT_NEAR(hi, 2.5, 1e-3);
-  // A facet in the plane y = 0, seen along a row at y = 3: no point of it is closer than 0.5.
-  const Filter wall({0, 0, 0}, {10, 0, 0}, {0, 0, 10}, 0.5);
+  // Its edges' planes all contain the x direction: a row beyond an edge keeps the slab's
+  // stretch (the shell's box and the cell tests leave it out).
   lo = -100.0;
   hi = 100.0;
-  EXPECT_FALSE(wall.plane_x_range(3.0, 4.0, lo, hi));
+  EXPECT_TRUE(row_range(filter, 13.0, 4.0, lo, hi));
+  EXPECT_NEAR(lo, 1.5, 1e-3);
+  EXPECT_NEAR(hi, 2.5, 1e-3);
+}
+
+TEST(TriangleDistanceFilter, RowRangeIsBoundedByTheEdgesOfAFlatFacet) {
+  // The facet z = 0 with corners (0,0), (4,0), (0,4); t = 0.5, the row y = 1 at z = 0.2. Its
+  // plane and the edge along x run along the row and bound nothing; the edge x = 0 keeps
+  // x > -0.5 and the edge x + y = 4 keeps x < 3 + 0.5 sqrt(2).
+  const Vec3 a{0, 0, 0}, b{4, 0, 0}, c{0, 4, 0};
+  const Filter filter(a, b, c, 0.5);
+  double lo = -100.0;
+  double hi = 100.0;
+  ASSERT_TRUE(row_range(filter, 1.0, 0.2, lo, hi));
+  EXPECT_NEAR(lo, -0.5, 1e-3);
+  EXPECT_NEAR(hi, 3.0 + 0.5 * std::sqrt(2.0), 1e-3);
+  // The bounds are the true reach of the facet there only where a side is nearest: beyond the
+  // edge x = 0 at height 0.2 the reach is sqrt(0.25 - 0.04), inside the kept range.
+  EXPECT_TRUE(triangle_closer_than({-0.45, 1.0, 0.2}, a, b, c, 0.5));
+  EXPECT_FALSE(triangle_closer_than({-0.47, 1.0, 0.2}, a, b, c, 0.5));
+  EXPECT_LT(lo, -0.47);
+  // A row of another layer beyond the edge x + y = 4 by more than t: nothing is kept.
   lo = -100.0;
   hi = 100.0;
-  EXPECT_TRUE(wall.plane_x_range(0.25, 4.0, lo, hi));
-  EXPECT_EQ(lo, -100.0);
-  EXPECT_EQ(hi, 100.0);
+  EXPECT_FALSE(row_range(filter, 5.5, 0.0, lo, hi));
+  // A facet without a reliable plane (three points on a line) gives no bound.
+  const Filter line({0, 0, 0}, {1, 1, 1}, {2, 2, 2}, 0.5);
+  Filter::RowBound bounds[Filter::kMaxRowBounds];
+  EXPECT_EQ(line.row_bounds(0.0, 0.0, 0.0, -1.0, 1.0, bounds), 0);
 }
 
 }  // namespace

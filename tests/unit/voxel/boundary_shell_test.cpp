@@ -1,0 +1,146 @@
+#include "strata/voxel/boundary_shell.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "strata/mesh/primitive_models.hpp"
+#include "strata/mesh/weld_vertices.hpp"
+#include "strata/slicer/slice_model.hpp"
+#include "support/collecting_sink.hpp"
+#include "voxel/point_triangle_distance_internal.hpp"
+
+// The distance shell against its definition, cell by cell: a solid cell is boundary exactly when
+// it touches the outside or its centre is closer than t to some facet (the exact predicate, every
+// facet whose box may reach it). The meshes have wide facets, whose rows the shell decides as
+// runs between two exact tests, and small ones, decided cell by cell.
+
+namespace strata {
+namespace {
+
+/// Rotates every corner by the same rotation (in double): a closed mesh stays closed and welded.
+TriangleSoup rotated(const TriangleSoup& soup, double ax, double ay, double az) {
+  const auto turn = [&](Vec3 p) {
+    const auto about = [](double& u, double& v, double angle) {
+      const double c = std::cos(angle);
+      const double s = std::sin(angle);
+      const double nu = c * u - s * v;
+      v = s * u + c * v;
+      u = nu;
+    };
+    about(p.y, p.z, ax);
+    about(p.z, p.x, ay);
+    about(p.x, p.y, az);
+    return p;
+  };
+  TriangleSoup out = soup;
+  for (auto& t : out.triangles) {
+    for (Vec3& p : t) p = turn(p);
+  }
+  return out;
+}
+
+bool may_reach(const IndexedMesh& mesh, const std::array<VertexIndex, 3>& t, const Vec3& p,
+               double reach) {
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto coord = [axis](const Vec3& v) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; };
+    const double a = coord(mesh.vertices[t[0]]);
+    const double b = coord(mesh.vertices[t[1]]);
+    const double c = coord(mesh.vertices[t[2]]);
+    if (coord(p) < std::min({a, b, c}) - reach || coord(p) > std::max({a, b, c}) + reach) {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Slices `mesh` with the distance shell t and checks every cell against the definition; returns
+/// how many cells the distance (not the outside) made boundary.
+std::size_t expect_shell_by_definition(const IndexedMesh& mesh, double cell, double t) {
+  SliceOptions options;
+  options.grid = GridOptions{cell, cell, cell, std::nullopt};
+  options.shell_mode = ShellMode::Distance;
+  options.shell_mm = t;
+  options.batch_layers = 3;
+  auto grid = make_grid(mesh.bounds(), options.grid);
+  EXPECT_TRUE(grid.has_value());
+  if (!grid) return 0;
+  testing::CollectingSink sink;
+  LayerSink* sinks[] = {&sink};
+  auto summary = slice_model(mesh, *grid, options, sinks);
+  EXPECT_TRUE(summary.has_value());
+  if (!summary) return 0;
+  const GridSpec& g = *grid;
+  const auto solid = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+    if (i < 0 || j < 0 || k < 0 || i >= g.nx || j >= g.ny || k >= g.nz) return false;
+    return sink.at(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j),
+                   static_cast<std::uint32_t>(k)) != CellClass::Empty;
+  };
+  std::size_t by_distance = 0;
+  std::size_t wrong = 0;
+  for (std::uint32_t k = 0; k < g.nz; ++k) {
+    for (std::uint32_t j = 0; j < g.ny; ++j) {
+      for (std::uint32_t i = 0; i < g.nx; ++i) {
+        if (!solid(i, j, k)) continue;
+        const bool outside = !solid(i - 1, j, k) || !solid(i + 1, j, k) || !solid(i, j - 1, k) ||
+                             !solid(i, j + 1, k) || !solid(i, j, k - 1) || !solid(i, j, k + 1);
+        bool near = false;
+        const Vec3 p{g.xc(i), g.yc(j), g.zk(k)};
+        for (const auto& tri : mesh.triangles) {
+          if (!may_reach(mesh, tri, p, t * 1.001)) continue;
+          if (detail::triangle_closer_than(p, mesh.vertices[tri[0]], mesh.vertices[tri[1]],
+                                           mesh.vertices[tri[2]], t)) {
+            near = true;
+            break;
+          }
+        }
+        by_distance += (near && !outside) ? 1 : 0;
+        const CellClass expected = outside || near ? CellClass::Boundary : CellClass::Interior;
+        if (sink.at(i, j, k) != expected && ++wrong <= 5) {
+          ADD_FAILURE() << "cell (" << i << ", " << j << ", " << k << ") t=" << t << ": is "
+                        << static_cast<int>(sink.at(i, j, k)) << ", the definition gives "
+                        << static_cast<int>(expected);
+        }
+      }
+    }
+  }
+  EXPECT_EQ(wrong, 0u);
+  return by_distance;
+}
+
+TEST(BoundaryShell, ATiltedBoxIsItsDefinitionCellForCell) {
+  const IndexedMesh box =
+      weld_vertices(rotated(mesh::make_box({-5, -4, -3}, {5, 4, 3}), 0.3, 0.5, 0.7));
+  for (const double t : {0.6, 1.3}) {
+    EXPECT_GT(expect_shell_by_definition(box, 0.25, t), 100u) << "t=" << t;
+  }
+}
+
+TEST(BoundaryShell, ATetrahedronAndASphereAreTheirDefinitionCellForCell) {
+  const IndexedMesh tetra = weld_vertices(mesh::make_tetrahedron());
+  EXPECT_GT(expect_shell_by_definition(tetra, 0.25, 0.9), 100u);
+  // 320 facets about 1.6 mm wide: rows of six to eight cells, decided cell by cell or as runs.
+  const IndexedMesh ball = weld_vertices(rotated(mesh::make_sphere(5.0, 2), 0.1, 0.2, 0.3));
+  EXPECT_GT(expect_shell_by_definition(ball, 0.2, 0.7), 100u);
+}
+
+TEST(BoundaryShell, FacetsInsideTheSolidMakeAShellAroundThemToo) {
+  // Two overlapping boxes: under nonzero their union is solid, and the facets of each inside the
+  // other are surface all the same, with a shell around them.
+  TriangleSoup both = rotated(mesh::make_box({0, 0, 0}, {8, 6, 5}), 0.0, 0.0, 0.4);
+  const TriangleSoup other = rotated(mesh::make_box({3, 2, 1}, {11, 9, 7}), 0.2, 0.0, 0.0);
+  both.triangles.insert(both.triangles.end(), other.triangles.begin(), other.triangles.end());
+  EXPECT_GT(expect_shell_by_definition(weld_vertices(both), 0.25, 0.8), 100u);
+}
+
+TEST(BoundaryShell, ALoneFacetInsideTheSolidHasTheShellItsEdgesAndCornersReach) {
+  // No other facet comes near the lone facet's edges and corners: the cells around them are
+  // boundary by its distance alone, up to the true reach past each edge and corner.
+  TriangleSoup soup = mesh::make_box({0, 0, 0}, {12, 12, 8});
+  soup.triangles.push_back({Vec3{3, 3, 4}, Vec3{9.5, 4, 3}, Vec3{5, 9.25, 5}});
+  soup.triangles.push_back({Vec3{3, 3, 4}, Vec3{5, 9.25, 5}, Vec3{9.5, 4, 3}});
+  EXPECT_GT(expect_shell_by_definition(weld_vertices(soup), 0.25, 0.9), 100u);
+}
+
+}  // namespace
+}  // namespace strata
