@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <chrono>
@@ -19,7 +20,8 @@ namespace strata {
 namespace {
 
 constexpr std::size_t kMaxOpenChainReports = 1000;
-// Memory the layers of one batch may take (solid bitmaps and classes, one byte a cell each).
+// Memory the layers in flight may take (solid bitmaps and classes, one byte a cell each; two
+// batches: one being written while the next is computed).
 constexpr double kBatchMemoryBytes = 2.0e9;
 
 /// "3, 4, 5" for the first few layers that `has` picks, "3, 4, 5, ..." when there are more.
@@ -117,7 +119,7 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
   const double layer_bytes =
       static_cast<double>(std::max<std::uint64_t>(1, grid.cells_per_layer()));
   const std::uint32_t batch = static_cast<std::uint32_t>(
-      std::clamp(kBatchMemoryBytes / (2.0 * layer_bytes), 1.0,
+      std::clamp(kBatchMemoryBytes / (4.0 * layer_bytes), 1.0,
                  static_cast<double>(std::max(1, options.batch_layers))));
 
   std::map<std::int64_t, LayerGeometry> pending;             // computed, not yet sent to the sinks
@@ -128,33 +130,14 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
     return it == solids.end() ? nullptr : it->second.data();
   };
 
-  std::uint32_t next_emit = first;
-  std::vector<std::vector<CellClass>> classes;
-  for (std::uint32_t k0 = lo; k0 < hi; k0 += batch) {
-    const std::uint32_t k1 = std::min(hi, k0 + batch);
-    kernel.prepare_batch(k0, k1);
-    std::vector<LayerGeometry> computed(k1 - k0);
-    tbb::parallel_for(k0, k1, [&](std::uint32_t k) { computed[k - k0] = kernel.compute_layer(k); });
-    for (std::uint32_t k = k0; k < k1; ++k) {
-      LayerGeometry& g = computed[k - k0];
-      if (classify) solids[k] = std::move(g.fill.solid);
-      g.fill.solid = {};
-      if (span->contains(k)) pending.emplace(k, std::move(g));
-    }
-    // Layers whose shell window is complete can be classified and written.
-    const std::uint32_t emit_end =
-        k1 == hi ? end : std::min(end, k1 > reach ? k1 - reach : std::uint32_t{0});
-    if (emit_end <= next_emit) continue;
-    classes.resize(emit_end - next_emit);
-    if (classify) {
-      tbb::parallel_for(next_emit, emit_end, [&](std::uint32_t k) {
-        shell->classify(k, lookup, classes[k - next_emit]);
-      });
-    }
-    for (std::uint32_t k = next_emit; k < emit_end; ++k) {
+  // Writes layers [from, to), classified in `classes`, in order.
+  const auto write_layers =
+      [&](std::uint32_t from, std::uint32_t to,
+          const std::vector<std::vector<CellClass>>& classes) -> Result<void> {
+    for (std::uint32_t k = from; k < to; ++k) {
       auto node = pending.extract(k);
       LayerGeometry& g = node.mapped();
-      const std::vector<CellClass>& cells = classes[k - next_emit];
+      const std::vector<CellClass>& cells = classes[k - from];
       LayerStats& stats = summary.layers[k - first];
       stats.layer = k;
       stats.z_mm = grid.zk(k);
@@ -192,16 +175,75 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
       for (LayerSink* sink : sinks) {
         if (auto ok = sink->add_layer(result); !ok) {
           abort_all(sinks);
-          return ok.error();
+          return ok;
         }
       }
       if (progress) progress(k + 1 - first, span->count());
     }
-    next_emit = emit_end;
+    return {};
+  };
+  const auto compute_batch = [&](std::uint32_t k0, std::uint32_t k1) {
+    kernel.prepare_batch(k0, k1);
+    std::vector<LayerGeometry> computed(k1 - k0);
+    tbb::parallel_for(k0, k1, [&](std::uint32_t k) { computed[k - k0] = kernel.compute_layer(k); });
+    return computed;
+  };
+
+  // A pipeline of rounds: while this thread writes the layers classified in the round before
+  // (the writers — encoding, the view's data — are serial), the pool classifies the layers whose
+  // shell window is now complete and computes the next batch.
+  std::uint32_t next_write = first;      // the first layer not yet written
+  std::uint32_t classified_end = first;  // layers [next_write, classified_end) are in `ready`
+  std::vector<std::vector<CellClass>> ready;
+  std::vector<std::vector<CellClass>> classifying;
+  std::vector<LayerGeometry> computed;
+  if (lo < hi) computed = compute_batch(lo, std::min(hi, lo + batch));
+  for (std::uint32_t k0 = lo; k0 < hi; k0 += batch) {
+    const std::uint32_t k1 = std::min(hi, k0 + batch);
+    for (std::uint32_t k = k0; k < k1; ++k) {
+      LayerGeometry& g = computed[k - k0];
+      if (classify) solids[k] = std::move(g.fill.solid);
+      g.fill.solid = {};
+      if (span->contains(k)) pending.emplace(k, std::move(g));
+    }
+    computed.clear();
+    // Layers whose shell window is complete can be classified.
+    const std::uint32_t window_end =
+        k1 == hi ? end : std::min(end, k1 > reach ? k1 - reach : std::uint32_t{0});
+    const std::uint32_t class_from = classified_end;
+    const std::uint32_t class_to = std::max(classified_end, window_end);
+    classifying.assign(class_to - class_from, {});
+    tbb::task_group round;
+    round.run([&, k1, class_from, class_to] {
+      if (classify) {
+        tbb::parallel_for(class_from, class_to, [&](std::uint32_t k) {
+          shell->classify(k, lookup, classifying[k - class_from]);
+        });
+      }
+      if (k1 < hi) computed = compute_batch(k1, std::min(hi, k1 + batch));
+    });
+    // On an early return (a writer failed) the round is cancelled and waited for: it refers to
+    // this frame. Its own failure would only repeat that the run failed.
+    struct CancelOnReturn {
+      tbb::task_group& group;
+      ~CancelOnReturn() {
+        group.cancel();
+        try {
+          group.wait();
+        } catch (...) {  // NOLINT(bugprone-empty-catch): the run is failing already
+        }
+      }
+    } cancel_on_return{round};
+    if (auto ok = write_layers(next_write, classified_end, ready); !ok) return ok.error();
+    next_write = classified_end;
+    round.wait();  // the round's failure is the run's
+    ready = std::move(classifying);
+    classified_end = class_to;
     // Keep only the solid layers the next classifications can still reach.
-    const std::int64_t keep_from = static_cast<std::int64_t>(next_emit) - reach;
+    const std::int64_t keep_from = static_cast<std::int64_t>(classified_end) - reach;
     while (!solids.empty() && solids.begin()->first < keep_from) solids.erase(solids.begin());
   }
+  if (auto ok = write_layers(next_write, classified_end, ready); !ok) return ok.error();
 
   for (LayerSink* sink : sinks) {
     if (auto ok = sink->finish(); !ok) {

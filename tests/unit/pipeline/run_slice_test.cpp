@@ -7,6 +7,7 @@
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "strata/slicer/slice_model.hpp"
 #include "support/collecting_sink.hpp"
@@ -120,6 +121,28 @@ class RefusingSink final : public LayerSink {
   Error error_;
 };
 
+/// Accepts layers until `failing_layer`, whose write it refuses with `error`.
+class LayerRefusingSink final : public LayerSink {
+ public:
+  LayerRefusingSink(std::uint32_t failing_layer, Error error)
+      : failing_layer_(failing_layer), error_(std::move(error)) {}
+  Result<void> begin(const SliceRunInfo&) override { return {}; }
+  Result<void> add_layer(const LayerResult& layer) override {
+    if (layer.layer == failing_layer_) return error_;
+    written.push_back(layer.layer);
+    return {};
+  }
+  Result<void> finish() override { return {}; }
+  void abort() noexcept override { aborted = true; }
+
+  std::vector<std::uint32_t> written;
+  bool aborted = false;
+
+ private:
+  std::uint32_t failing_layer_;
+  Error error_;
+};
+
 SliceOptions unit_cells() {
   SliceOptions o;
   o.grid = GridOptions{1.0, 1.0, 1.0, std::nullopt};
@@ -145,6 +168,41 @@ TEST(RunSlice, AWorkerThatThrowsAbortsTheSinksAndReturnsAnInternalError) {
   EXPECT_EQ(r.error().message, "test kernel failed: layer 6 broke");
   EXPECT_TRUE(sink.aborted);
   EXPECT_FALSE(sink.finished);
+}
+
+TEST(RunSlice, AWriterThatFailsWhileTheNextBatchFailsTooReturnsTheWritersError) {
+  // Batches of 4 layers: layer 1 is written while the third batch is computed, and computing
+  // layer 9 of that batch throws. The run stops at the writer's error, waits for the batch in
+  // flight, and reports the writer's error, not the batch's.
+  const BoxRun s;
+  ASSERT_GE(s.grid.nz, 12u);
+  FailingKernel kernel(s.grid, 9, Failure::Throw);
+  LayerRefusingSink refusing(1, Error{ErrorCode::BadInput, "no space left", "out.cells"});
+  testing::CollectingSink collecting;
+  LayerSink* sinks[] = {&collecting, &refusing};
+  const auto r = run_slice(s.mesh, s.grid, s.options, kernel, sinks);
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().to_string(), "out.cells: no space left");
+  EXPECT_EQ(refusing.written, std::vector<std::uint32_t>{0});
+  EXPECT_TRUE(refusing.aborted);
+  EXPECT_TRUE(collecting.aborted);
+  EXPECT_FALSE(collecting.finished);
+}
+
+TEST(RunSlice, LayersAreWrittenInOrderWhileLaterBatchesAreComputed) {
+  const BoxRun s;
+  for (const int batch : {1, 3, 4, 100}) {
+    SliceOptions options = s.options;
+    options.batch_layers = batch;
+    options.shell_mm = 2.0;  // a shell window of two layers each side
+    testing::CollectingSink sink;
+    LayerSink* sinks[] = {&sink};
+    ASSERT_TRUE(slice_model(s.mesh, s.grid, options, sinks).has_value());
+    std::vector<std::uint32_t> all(s.grid.nz);
+    for (std::uint32_t k = 0; k < s.grid.nz; ++k) all[k] = k;
+    EXPECT_EQ(sink.order, all) << "batch " << batch;
+    EXPECT_TRUE(sink.finished);
+  }
 }
 
 TEST(RunSlice, OutOfMemoryOnAWorkerIsAnInternalError) {
