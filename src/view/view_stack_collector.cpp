@@ -66,10 +66,14 @@ Result<void> ViewStackCollector::add_layer(const LayerResult& layer) {
   for (std::uint32_t j = 0; j < g.ny; ++j) {
     std::uint8_t* row = plane + std::size_t{j / v.by} * v.nx;
     const CellClass* cells = layer.cells.data() + std::size_t{j} * g.nx;
-    for (std::uint32_t i = 0; i < g.nx; ++i) {
-      const auto code = static_cast<std::uint8_t>(cells[i]);
-      std::uint8_t& block = row[i / v.bx];
-      if (code > block) block = code;
+    // Block by block: the largest code of the block's cells of this row.
+    for (std::uint32_t i0 = 0, b = 0; i0 < g.nx; i0 += v.bx, ++b) {
+      const std::uint32_t i1 = std::min(g.nx, i0 + v.bx);
+      std::uint8_t block = row[b];
+      for (std::uint32_t i = i0; i < i1; ++i) {
+        block = std::max(block, static_cast<std::uint8_t>(cells[i]));
+      }
+      row[b] = block;
     }
   }
 

@@ -106,13 +106,28 @@ void BoundaryShell::classify(std::uint32_t k, const SolidLayerLookup& solid,
   const std::uint8_t* above = solid(static_cast<std::int64_t>(k) + 1);
   out.assign(grid_.cells_per_layer(), CellClass::Empty);
   // Solid cells, and the first ring: a solid cell with an empty 6-neighbour (outside the grid
-  // counts as empty).
+  // counts as empty). Row by row: on the grid's border rows and columns, and when a layer
+  // beside is missing, every solid cell touches the outside.
   for (std::uint32_t j = 0; j < ny; ++j) {
-    for (std::uint32_t i = 0; i < nx; ++i) {
-      const std::size_t c = std::size_t{j} * nx + i;
-      if (!here[c]) continue;
-      const bool outside = touches_outside(here, below, above, c, i, j, nx, ny);
-      out[c] = outside ? CellClass::Boundary : CellClass::Interior;
+    const std::size_t row = std::size_t{j} * nx;
+    const std::uint8_t* h = here + row;
+    CellClass* o = out.data() + row;
+    if (j == 0 || j + 1 == ny || below == nullptr || above == nullptr) {
+      for (std::uint32_t i = 0; i < nx; ++i) {
+        if (h[i]) o[i] = CellClass::Boundary;
+      }
+      continue;
+    }
+    const std::uint8_t* north = h + nx;
+    const std::uint8_t* south = h - nx;
+    const std::uint8_t* down = below + row;
+    const std::uint8_t* up = above + row;
+    if (h[0]) o[0] = CellClass::Boundary;
+    if (nx > 1 && h[nx - 1]) o[nx - 1] = CellClass::Boundary;
+    for (std::uint32_t i = 1; i + 1 < nx; ++i) {
+      const bool enclosed = (h[i - 1] != 0) & (h[i + 1] != 0) & (north[i] != 0) & (south[i] != 0) &
+                            (down[i] != 0) & (up[i] != 0);
+      o[i] = h[i] == 0 ? CellClass::Empty : (enclosed ? CellClass::Interior : CellClass::Boundary);
     }
   }
   if (mode_ == ShellMode::Distance) {
