@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <optional>
 #include <set>
@@ -201,6 +202,17 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   std::vector<LayerSink*> sinks;
   for (auto& s : owned) sinks.push_back(s.get());
 
+  // The page's drawing of the model needs the mesh alone: with more than one thread it is
+  // simplified on a thread of its own while the mesh is checked and sliced.
+  const auto make_display = [&] {
+    return view::make_noted_display_mesh(m.mesh, o.page.max_facets, view::SliceStage::Sliced,
+                                         view::CountDigits::GroupedByThousands);
+  };
+  std::future<view::NotedDisplayMesh> display_ahead;
+  if (view_collector != nullptr && options->threads != 1) {
+    display_ahead = std::async(std::launch::async, make_display);
+  }
+
   diagnose::DiagnoseOptions diagnose_options;
   diagnose_options.check_self_intersections = view_collector != nullptr && o.page.full_check;
   diagnose_options.near_vertex_mm = 0.0;
@@ -271,8 +283,7 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
     page.source_kind = "model";
     page.source_path = m.path.string();
     page.report_json = report.dump();
-    view::NotedDisplayMesh display = view::make_noted_display_mesh(
-        m.mesh, o.page.max_facets, view::SliceStage::Sliced, view::CountDigits::GroupedByThousands);
+    view::NotedDisplayMesh display = display_ahead.valid() ? display_ahead.get() : make_display();
     page.mesh = std::move(display.mesh);
     if (display.note) page.notes.push_back(std::move(*display.note));
     if (!mesh_report.self_intersections_checked) {

@@ -43,7 +43,7 @@ struct SliceOptions {
   /// Worker threads; 0 lets TBB decide.
   int threads = 0;
   /// Layers computed together before the shell window moves on (memory vs parallelism).
-  int batch_layers = 32;
+  int batch_layers = 16;
   /// Classify the cells even when no sink reads them, for the summary's counts and volume. When
   /// false and no sink needs cells (contour outputs alone), the shell and the classification are
   /// skipped and SliceSummary::cells_classified is false: the work not asked for is not done.
