@@ -119,8 +119,16 @@ std::vector<EdgeUse> collect_edge_uses(const IndexedMesh& mesh, const std::vecto
       uses.push_back({std::min(a, b), std::max(a, b), static_cast<FacetIndex>(f), a < b});
     }
   }
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
-    return std::tie(x.lo, x.hi, x.facet, x.forward) < std::tie(y.lo, y.hi, y.facet, y.forward);
+  // Compared as two 64-bit keys, (lo, hi) and (facet, forward): the order of the four fields,
+  // at a fraction of the cost on meshes of millions of edges.
+  const auto edge_key = [](const EdgeUse& u) { return std::uint64_t{u.lo} << 32 | u.hi; };
+  const auto use_key = [](const EdgeUse& u) {
+    return std::uint64_t{u.facet} << 1 | (u.forward ? 1U : 0U);
+  };
+  std::sort(uses.begin(), uses.end(), [&](const EdgeUse& x, const EdgeUse& y) {
+    const std::uint64_t ex = edge_key(x);
+    const std::uint64_t ey = edge_key(y);
+    return ex < ey || (ex == ey && use_key(x) < use_key(y));
   });
   return uses;
 }
