@@ -105,31 +105,36 @@ struct EdgeUse {
 };
 
 /// The edge uses of every facet not in `skip` (zero-length edges left out), sorted by edge and
-/// then facet.
+/// then facet. A counting sort by the lower vertex, then a sort of each vertex's few uses by
+/// (hi, facet, forward): linear but for those small sorts, and no copy of the uses.
 std::vector<EdgeUse> collect_edge_uses(const IndexedMesh& mesh, const std::vector<bool>& skip) {
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * mesh.triangles.size());
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    if (skip[f]) continue;
-    const auto& t = mesh.triangles[f];
-    for (int c = 0; c < 3; ++c) {
-      const VertexIndex a = t[c];
-      const VertexIndex b = t[(c + 1) % 3];
-      if (a == b) continue;  // a zero-length edge joins nothing
-      uses.push_back({std::min(a, b), std::max(a, b), static_cast<FacetIndex>(f), a < b});
+  const auto each_use = [&](auto&& visit) {
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+      if (skip[f]) continue;
+      const auto& t = mesh.triangles[f];
+      for (int c = 0; c < 3; ++c) {
+        const VertexIndex a = t[c];
+        const VertexIndex b = t[(c + 1) % 3];
+        if (a == b) continue;  // a zero-length edge joins nothing
+        visit(EdgeUse{std::min(a, b), std::max(a, b), static_cast<FacetIndex>(f), a < b});
+      }
     }
-  }
-  // Compared as two 64-bit keys, (lo, hi) and (facet, forward): the order of the four fields,
-  // at a fraction of the cost on meshes of millions of edges.
-  const auto edge_key = [](const EdgeUse& u) { return std::uint64_t{u.lo} << 32 | u.hi; };
-  const auto use_key = [](const EdgeUse& u) {
-    return std::uint64_t{u.facet} << 1 | (u.forward ? 1U : 0U);
   };
-  std::sort(uses.begin(), uses.end(), [&](const EdgeUse& x, const EdgeUse& y) {
-    const std::uint64_t ex = edge_key(x);
-    const std::uint64_t ey = edge_key(y);
-    return ex < ey || (ex == ey && use_key(x) < use_key(y));
-  });
+  const std::size_t nv = mesh.vertices.size();
+  std::vector<std::size_t> start(nv + 1, 0);
+  each_use([&](const EdgeUse& u) { ++start[std::size_t{u.lo} + 1]; });
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<EdgeUse> uses(start[nv]);
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  each_use([&](const EdgeUse& u) { uses[next[u.lo]++] = u; });
+  const auto by_hi_facet = [](const EdgeUse& x, const EdgeUse& y) {
+    return std::tie(x.hi, x.facet, x.forward) < std::tie(y.hi, y.facet, y.forward);
+  };
+  for (std::size_t v = 0; v < nv; ++v) {
+    const auto first = uses.begin() + static_cast<std::ptrdiff_t>(start[v]);
+    const auto last = uses.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
+    if (last - first > 1) std::sort(first, last, by_hi_facet);
+  }
   return uses;
 }
 
