@@ -51,14 +51,35 @@ bool slab_footprint(const Vec3& a, const Vec3& b, const Vec3& c, double z_lo, do
   return any;
 }
 
-/// A solid cell touches the outside when one of its 6-neighbours is empty (outside the grid
-/// counts as empty; a missing layer is outside).
-bool touches_outside(const std::uint8_t* here, const std::uint8_t* below, const std::uint8_t* above,
-                     std::size_t c, std::uint32_t i, std::uint32_t j, std::uint32_t nx,
-                     std::uint32_t ny) {
-  return i == 0 || i + 1 == nx || j == 0 || j + 1 == ny || !here[c - 1] || !here[c + 1] ||
-         !here[c - nx] || !here[c + nx] || below == nullptr || !below[c] || above == nullptr ||
-         !above[c];
+/// The first ring of a layer: every solid cell is Interior, or Boundary when one of its
+/// 6-neighbours is empty (outside the grid counts as empty; a missing layer is outside); the
+/// other cells are left as they are. Row by row: on the grid's border rows and columns, and
+/// when a layer beside is missing, every solid cell touches the outside.
+void first_ring(const std::uint8_t* here, const std::uint8_t* below, const std::uint8_t* above,
+                std::uint32_t nx, std::uint32_t ny, CellClass* out) {
+  for (std::uint32_t j = 0; j < ny; ++j) {
+    const std::size_t row = std::size_t{j} * nx;
+    const std::uint8_t* h = here + row;
+    CellClass* o = out + row;
+    if (j == 0 || j + 1 == ny || below == nullptr || above == nullptr) {
+      for (std::uint32_t i = 0; i < nx; ++i) {
+        if (h[i]) o[i] = CellClass::Boundary;
+      }
+      continue;
+    }
+    const std::uint8_t* north = h + nx;
+    const std::uint8_t* south = h - nx;
+    const std::uint8_t* down = below + row;
+    const std::uint8_t* up = above + row;
+    if (h[0]) o[0] = CellClass::Boundary;
+    if (nx > 1 && h[nx - 1]) o[nx - 1] = CellClass::Boundary;
+    for (std::uint32_t i = 1; i + 1 < nx; ++i) {
+      if (h[i] == 0) continue;
+      const bool enclosed = (h[i - 1] != 0) & (h[i + 1] != 0) & (north[i] != 0) & (south[i] != 0) &
+                            (down[i] != 0) & (up[i] != 0);
+      o[i] = enclosed ? CellClass::Interior : CellClass::Boundary;
+    }
+  }
 }
 
 }  // namespace
@@ -105,31 +126,8 @@ void BoundaryShell::classify(std::uint32_t k, const SolidLayerLookup& solid,
   const std::uint8_t* below = solid(static_cast<std::int64_t>(k) - 1);
   const std::uint8_t* above = solid(static_cast<std::int64_t>(k) + 1);
   out.assign(grid_.cells_per_layer(), CellClass::Empty);
-  // Solid cells, and the first ring: a solid cell with an empty 6-neighbour (outside the grid
-  // counts as empty). Row by row: on the grid's border rows and columns, and when a layer
-  // beside is missing, every solid cell touches the outside.
-  for (std::uint32_t j = 0; j < ny; ++j) {
-    const std::size_t row = std::size_t{j} * nx;
-    const std::uint8_t* h = here + row;
-    CellClass* o = out.data() + row;
-    if (j == 0 || j + 1 == ny || below == nullptr || above == nullptr) {
-      for (std::uint32_t i = 0; i < nx; ++i) {
-        if (h[i]) o[i] = CellClass::Boundary;
-      }
-      continue;
-    }
-    const std::uint8_t* north = h + nx;
-    const std::uint8_t* south = h - nx;
-    const std::uint8_t* down = below + row;
-    const std::uint8_t* up = above + row;
-    if (h[0]) o[0] = CellClass::Boundary;
-    if (nx > 1 && h[nx - 1]) o[nx - 1] = CellClass::Boundary;
-    for (std::uint32_t i = 1; i + 1 < nx; ++i) {
-      const bool enclosed = (h[i - 1] != 0) & (h[i + 1] != 0) & (north[i] != 0) & (south[i] != 0) &
-                            (down[i] != 0) & (up[i] != 0);
-      o[i] = h[i] == 0 ? CellClass::Empty : (enclosed ? CellClass::Interior : CellClass::Boundary);
-    }
-  }
+  // Solid cells, and the first ring: a solid cell with an empty 6-neighbour.
+  first_ring(here, below, above, nx, ny, out.data());
   if (mode_ == ShellMode::Distance) {
     mark_near_surface(k, out);
   } else if (rings_ > 1) {
@@ -245,21 +243,15 @@ void BoundaryShell::mark_rings(std::uint32_t k, const SolidLayerLookup& solid,
   const std::size_t depth = static_cast<std::size_t>(hi - lo + 1);
   std::vector<std::uint8_t> ring(depth * layer_cells, 0);
   std::deque<std::size_t> frontier;
+  std::vector<CellClass> layer;
   for (std::int64_t q = lo; q <= hi; ++q) {
-    const std::uint8_t* here = solid(q);
-    const std::uint8_t* below = solid(q - 1);
-    const std::uint8_t* above = solid(q + 1);
+    layer.assign(layer_cells, CellClass::Empty);
+    first_ring(solid(q), solid(q - 1), solid(q + 1), nx, ny, layer.data());
     const std::size_t base = static_cast<std::size_t>(q - lo) * layer_cells;
-    for (std::uint32_t j = 0; j < ny; ++j) {
-      for (std::uint32_t i = 0; i < nx; ++i) {
-        const std::size_t c = std::size_t{j} * nx + i;
-        if (!here[c]) continue;
-        const bool outside = touches_outside(here, below, above, c, i, j, nx, ny);
-        if (outside) {
-          ring[base + c] = 1;
-          frontier.push_back(base + c);
-        }
-      }
+    for (std::size_t c = 0; c < layer_cells; ++c) {
+      if (layer[c] != CellClass::Boundary) continue;
+      ring[base + c] = 1;
+      frontier.push_back(base + c);
     }
   }
   while (!frontier.empty()) {
