@@ -1,3 +1,4 @@
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
@@ -20,7 +21,10 @@ namespace strata::exact::detail {
 namespace {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
-using Point3 = Kernel::Point_3;
+// The soup's points are the input's doubles, only compared and copied: the repair's tests are
+// predicates (exact in Epick), the orientation is combinatorial, and no point is constructed, so
+// Epick gives the same soup as Epeck without a lazy number per coordinate.
+using Point3 = CGAL::Epick::Point_3;
 using Mesh = CGAL::Surface_mesh<Point3>;
 using Polygon = std::vector<std::size_t>;
 
@@ -31,8 +35,8 @@ bool same_edge(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b) {
 }
 
 Vec3 to_vec3(const Point3& p) {
-  // The soup's points were built from doubles and only copied since: exact.
-  return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+  // The soup's points were built from doubles and only copied since.
+  return {p.x(), p.y(), p.z()};
 }
 
 }  // namespace
