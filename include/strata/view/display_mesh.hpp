@@ -21,12 +21,21 @@ struct DisplayMesh {
   std::size_t facets() const { return indices.size() / 3; }
 };
 
-/// The display mesh of `mesh`: every facet when it has at most `max_facets`; otherwise a
-/// simplification to about `max_facets` facets by edge collapse (CGAL's
-/// Surface_mesh_simplification, shortest edges first, on the mesh oriented and made manifold by
-/// CGAL's polygon soup functions). Degenerate facets are left out of a simplified mesh. Only
-/// the picture uses it: slicing always uses every facet of the model.
-DisplayMesh make_display_mesh(const IndexedMesh& mesh, std::size_t max_facets);
+/// The most facets make_display_mesh gives to edge collapse, which costs microseconds a facet
+/// (5 s for a million); beyond it a mesh is clustered first, in linear time.
+inline constexpr std::size_t kCollapseAtMost = 200'000;
+
+/// The display mesh of `mesh`: every facet when it has at most `max_facets`; otherwise about
+/// `max_facets` facets. A mesh of more than max(`max_facets`, `collapse_at_most`) facets is first
+/// clustered to that many, in linear time: the vertices in each cube of a grid become one at their
+/// mean, and a facet is kept when its corners fall in three cubes (each set of three once) and the
+/// clustering did not fold it over; the cube is the smallest that keeps few enough. What is
+/// still over the budget is simplified by edge collapse (CGAL's Surface_mesh_simplification,
+/// shortest edges first, on the mesh oriented and made manifold by CGAL's polygon soup
+/// functions). Degenerate and repeated facets are left out of a simplified mesh. Only the
+/// picture uses it: slicing always uses every facet of the model.
+DisplayMesh make_display_mesh(const IndexedMesh& mesh, std::size_t max_facets,
+                              std::size_t collapse_at_most = kCollapseAtMost);
 
 /// Whether the page shows a model already sliced, for the note on a simplified display mesh.
 enum class SliceStage { Sliced, NotSlicedYet };
