@@ -10,11 +10,11 @@
 #include <cstring>
 #include <limits>
 #include <set>
-#include <unordered_map>
 #include <utility>
 
 #include "exact/exact_soup_internal.hpp"
 #include "soup/orient_soup_visitor.hpp"
+#include "soup/polygon_mesh_check.hpp"
 #include "soup/position_key.hpp"
 
 namespace strata::exact::detail {
@@ -75,7 +75,9 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
   d.report.non_manifold_edges = counters.non_manifold_edges.size();
 
   d.facet_face.assign(input.triangles.size(), kNone);
-  if (polygons.empty() || !PMP::is_polygon_soup_a_polygon_mesh(polygons)) return;
+  // CGAL's own check (PMP::is_polygon_soup_a_polygon_mesh) gives the same answer with a tree
+  // node per halfedge: the largest allocation of the exact path.
+  if (polygons.empty() || !soup::is_polygon_mesh(polygons, points.size())) return;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, d.mesh);
   // The conversion adds vertex i for point i and face i for polygon i; check it did.
   if (d.mesh.number_of_vertices() != points.size() || d.mesh.number_of_faces() != polygons.size()) {
@@ -85,16 +87,29 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
   for (std::size_t i = 0; i < points.size(); ++i) d.vertex_position[i] = to_vec3(points[i]);
 
   // Input facets by corner positions; a position set shared by several facets (duplicates,
-  // unwelded copies) maps to none of them.
-  std::unordered_map<soup::PositionKey, std::uint32_t, soup::DoublesHash> by_key;
-  by_key.reserve(input.triangles.size());
-  for (std::size_t f = 0; f < input.triangles.size(); ++f) {
+  // unwelded copies) maps to none of them. Held as (hash of the positions, facet), sorted, and
+  // the positions compared again on a match: 16 bytes a facet, not a hash map node of 96.
+  const auto key_of_facet = [&](std::uint32_t f) {
     const auto& t = input.triangles[f];
-    const soup::PositionKey k =
-        soup::position_key({input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]});
-    const auto [it, inserted] = by_key.emplace(k, static_cast<std::uint32_t>(f));
-    if (!inserted) it->second = kNone;
+    return soup::position_key({input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]});
+  };
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> by_hash(input.triangles.size());
+  for (std::size_t f = 0; f < input.triangles.size(); ++f) {
+    const auto facet = static_cast<std::uint32_t>(f);
+    by_hash[f] = {soup::DoublesHash{}(key_of_facet(facet)), facet};
   }
+  std::sort(by_hash.begin(), by_hash.end());
+  const auto facet_at = [&](const soup::PositionKey& k) {
+    const std::uint64_t h = soup::DoublesHash{}(k);
+    std::uint32_t found = kNone;
+    for (auto it = std::lower_bound(by_hash.begin(), by_hash.end(), std::make_pair(h, 0u));
+         it != by_hash.end() && it->first == h; ++it) {
+      if (key_of_facet(it->second) != k) continue;
+      if (found != kNone) return kNone;  // shared
+      found = it->second;
+    }
+    return found;
+  };
   d.face_facet.assign(polygons.size(), kNone);
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     const Polygon& p = polygons[i];
@@ -108,10 +123,10 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
     if (!matches || corners != 3) return;  // not the face of polygon i: no halfedge path at all
     const soup::PositionKey k = soup::position_key(
         {d.vertex_position[p[0]], d.vertex_position[p[1]], d.vertex_position[p[2]]});
-    const auto it = by_key.find(k);
-    if (it == by_key.end() || it->second == kNone) continue;
-    d.face_facet[i] = it->second;
-    d.facet_face[it->second] = static_cast<std::uint32_t>(i);
+    const std::uint32_t facet = facet_at(k);
+    if (facet == kNone) continue;
+    d.face_facet[i] = facet;
+    d.facet_face[facet] = static_cast<std::uint32_t>(i);
   }
   d.usable = true;
   d.report.polygon_mesh = true;
