@@ -219,6 +219,12 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   // The page draws the defects, so it asks for more of their locations than a report lists.
   if (view_collector != nullptr) diagnose_options.max_locations = o.page.max_defects;
   out.mesh_report = diagnose::diagnose_mesh(m.mesh, m.soup, diagnose_options);
+  // The soup's corners and stored normals served the diagnosis; the welded mesh is what is
+  // sliced, and the soup is as large again (96 MB for a million facets).
+  m.soup.triangles.clear();
+  m.soup.triangles.shrink_to_fit();
+  m.soup.stored_normals.clear();
+  m.soup.stored_normals.shrink_to_fit();
   const diagnose::MeshReport& mesh_report = out.mesh_report;
   if (cancelled()) return cancel_error;
 
