@@ -36,11 +36,14 @@ class TriangleDistanceFilter {
     has_plane_ = nn_ > 2.0 * err_nn_;
     len_ = std::sqrt(nn_);
     if (has_plane_) {
+      const double err_mm = 6000.0 * kU * l2 * l2 * l2;
       for (int i = 0; i < 3; ++i) {
         const Vec3 e = sub(*v[(i + 1) % 3], *v[i]);
         m_[i] = cross(e, n_);  // outward in-plane normal of edge i
         mm_[i] = dot(m_[i], m_[i]);
+        inv_mm_[i] = 1.0 / (mm_[i] + err_mm);
       }
+      inv_nn_ = 1.0 / (nn_ + err_nn_);
     }
     coord_scale_ = std::max(max_abs(a), max_abs(b));
     coord_scale_ = std::max(coord_scale_, max_abs(c));
@@ -67,11 +70,13 @@ class TriangleDistanceFilter {
     if (has_plane_) {
       const double l2 = scale_ * scale_;
       const Vec3 w = sub(p, a_);
-      const double w_scale = std::max({max_abs(w), max_abs(sub(p, b_)), max_abs(sub(p, c_))});
+      // Bounds every |p - vertex| component: |p - b| <= |p - a| + |b - a|, likewise c.
+      const double w_scale = max_abs(w) + scale_;
       const double nw = std::fabs(dot(n_, w));
       const double err_nw = 100.0 * kU * l2 * w_scale;
       const double plane_num = std::max(0.0, nw - err_nw);
-      const double plane2 = plane_num * plane_num / (nn_ + err_nn_);
+      // Multiplying by the rounded reciprocal adds two roundings, far inside the 64 u below.
+      const double plane2 = plane_num * plane_num * inv_nn_;
       double edge2 = 0.0;
       const Vec3* v[3] = {&a_, &b_, &c_};
       const double err_m_dot = 600.0 * kU * l2 * scale_ * w_scale;
@@ -79,7 +84,7 @@ class TriangleDistanceFilter {
       for (int i = 0; i < 3; ++i) {
         if (!(mm_[i] > 2.0 * err_mm)) continue;
         const double mw = dot(m_[i], sub(p, *v[i])) - err_m_dot;
-        if (mw > 0.0) edge2 = std::max(edge2, mw * mw / (mm_[i] + err_mm));
+        if (mw > 0.0) edge2 = std::max(edge2, mw * mw * inv_mm_[i]);
       }
       if ((plane2 + edge2) * (1.0 - 64.0 * kU) > t2_ * (1.0 + 64.0 * kU)) return kFarther;
     }
@@ -228,6 +233,8 @@ class TriangleDistanceFilter {
   bool has_plane_ = false;
   Vec3 m_[3];
   double mm_[3] = {0.0, 0.0, 0.0};
+  double inv_mm_[3] = {0.0, 0.0, 0.0};  ///< 1 / (mm_ + its error bound)
+  double inv_nn_ = 0.0;                 ///< 1 / (nn_ + err_nn_)
 };
 
 }  // namespace strata::detail
