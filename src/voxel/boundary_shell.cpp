@@ -53,8 +53,9 @@ bool slab_footprint(const Vec3& a, const Vec3& b, const Vec3& c, double z_lo, do
 
 /// The first ring of a layer: every solid cell is Interior, or Boundary when one of its
 /// 6-neighbours is empty (outside the grid counts as empty; a missing layer is outside); the
-/// other cells are left as they are. Row by row: on the grid's border rows and columns, and
-/// when a layer beside is missing, every solid cell touches the outside.
+/// other cells must be Empty already (inside the grid's border they are written Empty again).
+/// Row by row: on the grid's border rows and columns, and when a layer beside is missing, every
+/// solid cell touches the outside.
 void first_ring(const std::uint8_t* here, const std::uint8_t* below, const std::uint8_t* above,
                 std::uint32_t nx, std::uint32_t ny, CellClass* out) {
   for (std::uint32_t j = 0; j < ny; ++j) {
@@ -73,11 +74,15 @@ void first_ring(const std::uint8_t* here, const std::uint8_t* below, const std::
     const std::uint8_t* up = above + row;
     if (h[0]) o[0] = CellClass::Boundary;
     if (nx > 1 && h[nx - 1]) o[nx - 1] = CellClass::Boundary;
+    // Without a branch, so that the compiler can take many cells a step.
     for (std::uint32_t i = 1; i + 1 < nx; ++i) {
-      if (h[i] == 0) continue;
+      const bool solid = h[i] != 0;
       const bool enclosed = (h[i - 1] != 0) & (h[i + 1] != 0) & (north[i] != 0) & (south[i] != 0) &
                             (down[i] != 0) & (up[i] != 0);
-      o[i] = enclosed ? CellClass::Interior : CellClass::Boundary;
+      const std::uint8_t empty = static_cast<std::uint8_t>(CellClass::Empty);
+      const std::uint8_t interior = static_cast<std::uint8_t>(CellClass::Interior);
+      const std::uint8_t boundary = static_cast<std::uint8_t>(CellClass::Boundary);
+      o[i] = static_cast<CellClass>(solid ? (enclosed ? interior : boundary) : empty);
     }
   }
 }
