@@ -4,6 +4,7 @@
 #include <cmath>
 #include <deque>
 #include <numeric>
+#include <optional>
 
 #include "voxel/triangle_distance_filter_internal.hpp"
 
@@ -166,7 +167,12 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
     const Vec3& c = mesh_.vertices[tri[2]];
     if (std::max({a.z, b.z, c.z}) < z_lo) continue;
     if (!slab_footprint(a, b, c, z_lo, z_hi, box)) continue;
-    const detail::TriangleDistanceFilter near(a, b, c, t);
+    // Built when a small facet's box first shows an interior cell: many boxes hold none.
+    std::optional<detail::TriangleDistanceFilter> near;
+    const auto filter = [&]() -> const detail::TriangleDistanceFilter& {
+      if (!near) near.emplace(a, b, c, t);
+      return *near;
+    };
     // A point closer than t to the facet is closer than sqrt(t^2 - gap^2) to it across the
     // layer, gap being the facet's z-distance from the layer's plane: the far layers of the
     // slab search a narrower box. The margins only widen it.
@@ -187,7 +193,7 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
         CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
         for (std::int64_t i = i0_box; i <= i1_box; ++i) {
           if (row[i] != CellClass::Interior) continue;
-          if (near.closer_than(Vec3{grid_.xc(static_cast<std::uint32_t>(i)), yc, z})) {
+          if (filter().closer_than(Vec3{grid_.xc(static_cast<std::uint32_t>(i)), yc, z})) {
             row[i] = CellClass::Boundary;
           }
         }
@@ -196,7 +202,7 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
     }
     detail::TriangleDistanceFilter::RowBound bounds[detail::TriangleDistanceFilter::kMaxRowBounds];
     const int bound_count =
-        near.row_bounds(z, box[1] - grow, box[3] + grow, box[0] - grow, box[2] + grow, bounds);
+        filter().row_bounds(z, box[1] - grow, box[3] + grow, box[0] - grow, box[2] + grow, bounds);
     for (std::int64_t j = j0; j <= j1; ++j) {
       const double yc = grid_.yc(static_cast<std::uint32_t>(j));
       double x_lo = box[0] - grow;
@@ -211,7 +217,7 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
           std::min(i1_box, static_cast<std::int64_t>(std::min(last, static_cast<double>(nx))));
       CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
       const auto closer = [&](std::int64_t i) {
-        return near.closer_than(Vec3{grid_.xc(static_cast<std::uint32_t>(i)), yc, z});
+        return filter().closer_than(Vec3{grid_.xc(static_cast<std::uint32_t>(i)), yc, z});
       };
       // The distance to a triangle is convex along the row, so the centres closer than t form
       // one run: find its first and last interior cell by the exact test, from either end, and
