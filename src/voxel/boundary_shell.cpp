@@ -12,15 +12,25 @@ namespace strata {
 
 namespace {
 
-/// Cells within `slack` outside [lo, hi] along one axis: the conservative index range of centres
-/// base + (i + 0.5) * d that may lie in [lo, hi].
+/// The indices i in [0, n) whose centre base + (i + 0.5) d, computed as the tests compute it,
+/// lies in [lo, hi] widened by 1e-12 of its ends: the formula's guess, moved to the exact ends by
+/// looking at the centres themselves. i0 > i1 when there is none.
 std::pair<std::int64_t, std::int64_t> centre_range(double base, double d, std::uint32_t n,
                                                    double lo, double hi) {
-  const double first = std::floor((lo - base) / d - 0.5) - 1.0;
-  const double last = std::ceil((hi - base) / d - 0.5) + 1.0;
-  const std::int64_t i0 = static_cast<std::int64_t>(std::max(0.0, first));
-  const std::int64_t i1 =
-      static_cast<std::int64_t>(std::min(static_cast<double>(n) - 1.0, std::max(-1.0, last)));
+  const double pad = 1e-12 * std::max(std::fabs(lo), std::fabs(hi));
+  lo -= pad;
+  hi += pad;
+  const double count = static_cast<double>(n);
+  const auto centre = [&](std::int64_t i) { return base + (static_cast<double>(i) + 0.5) * d; };
+  std::int64_t i0 =
+      static_cast<std::int64_t>(std::clamp(std::ceil((lo - base) / d - 0.5), 0.0, count));
+  std::int64_t i1 =
+      static_cast<std::int64_t>(std::clamp(std::floor((hi - base) / d - 0.5), -1.0, count - 1.0));
+  const auto last = static_cast<std::int64_t>(n) - 1;
+  while (i0 > 0 && centre(i0 - 1) >= lo) --i0;
+  while (i0 <= last && centre(i0) < lo) ++i0;
+  while (i1 < last && centre(i1 + 1) <= hi) ++i1;
+  while (i1 >= 0 && centre(i1) > hi) --i1;
   return {i0, i1};
 }
 
