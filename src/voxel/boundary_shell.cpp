@@ -219,12 +219,9 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
       double x_hi = box[2] + grow;
       for (int q = 0; q < bound_count; ++q) bounds[q].clip(yc, x_lo, x_hi);
       if (!(x_lo <= x_hi)) continue;
-      // Centres within one cell outside [x_lo, x_hi] stay (the reciprocal's rounding).
-      const double first = std::floor((x_lo - grid_.x0) * inv_dx - 0.5) - 1.0;
-      const double last = std::ceil((x_hi - grid_.x0) * inv_dx - 0.5) + 1.0;
-      const std::int64_t i0 = std::max(i0_box, static_cast<std::int64_t>(std::max(first, -1.0)));
-      const std::int64_t i1 =
-          std::min(i1_box, static_cast<std::int64_t>(std::min(last, static_cast<double>(nx))));
+      const auto [row_i0, row_i1] = centre_range(grid_.x0, grid_.dx, grid_.nx, x_lo, x_hi);
+      const std::int64_t i0 = std::max(i0_box, row_i0);
+      const std::int64_t i1 = std::min(i1_box, row_i1);
       CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
       const auto closer = [&](std::int64_t i) {
         return filter().closer_than(Vec3{grid_.xc(static_cast<std::uint32_t>(i)), yc, z});
