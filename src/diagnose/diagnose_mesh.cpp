@@ -1,6 +1,7 @@
 #include "strata/diagnose/diagnose_mesh.hpp"
 
 #include <fmt/format.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <array>
@@ -395,7 +396,7 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
       std::sort(key.begin(), key.end());
       keyed.emplace_back(key, static_cast<FacetIndex>(f));
     }
-    std::sort(keyed.begin(), keyed.end());
+    tbb::parallel_sort(keyed.begin(), keyed.end());  // the pairs differ: one order
     FirstOccurrences<FacetIndex> found{limit};
     for (std::size_t s = 1; s < keyed.size(); ++s) {
       if (keyed[s].first == keyed[s - 1].first) found.add(keyed[s].second, keyed[s].second);

@@ -1,5 +1,7 @@
 #include "strata/voxel/boundary_shell.hpp"
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -122,8 +124,10 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
     zmin[f] = std::min({mesh_.vertices[t[0]].z, mesh_.vertices[t[1]].z, mesh_.vertices[t[2]].z});
     zmax[f] = std::max({mesh_.vertices[t[0]].z, mesh_.vertices[t[1]].z, mesh_.vertices[t[2]].z});
   }
-  std::sort(facets_by_zmin_.begin(), facets_by_zmin_.end(),
-            [&](FacetIndex a, FacetIndex b) { return zmin[a] < zmin[b]; });
+  // Ties by index, so that the parallel sort gives one order.
+  tbb::parallel_sort(
+      facets_by_zmin_.begin(), facets_by_zmin_.end(),
+      [&](FacetIndex a, FacetIndex b) { return zmin[a] != zmin[b] ? zmin[a] < zmin[b] : a < b; });
   zmin_sorted_.resize(facets_by_zmin_.size());
   zmax_prefix_max_.resize(facets_by_zmin_.size());
   double running = -std::numeric_limits<double>::infinity();
