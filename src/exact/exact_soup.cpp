@@ -3,6 +3,7 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Surface_mesh.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <array>
@@ -41,6 +42,33 @@ Vec3 to_vec3(const Point3& p) {
 
 }  // namespace
 
+bool is_clean_soup(const IndexedMesh& mesh) {
+  for (const auto& t : mesh.triangles) {
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return false;
+  }
+  // Positions: sorted by their hash, equal hashes compared; +0 and -0 compare equal, as in CGAL.
+  const auto position_hash = [&](std::size_t v) {
+    const Vec3& p = mesh.vertices[v];
+    return soup::DoublesHash{}(std::array<double, 3>{p.x + 0.0, p.y + 0.0, p.z + 0.0});
+  };
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> by_position(mesh.vertices.size());
+  for (std::size_t v = 0; v < by_position.size(); ++v) {
+    by_position[v] = {position_hash(v), static_cast<std::uint32_t>(v)};
+  }
+  tbb::parallel_sort(by_position.begin(), by_position.end());
+  for (std::size_t a = 0; a < by_position.size(); ++a) {
+    for (std::size_t b = a + 1;
+         b < by_position.size() && by_position[b].first == by_position[a].first; ++b) {
+      if (mesh.vertices[by_position[a].second] == mesh.vertices[by_position[b].second])
+        return false;
+    }
+  }
+  std::vector<std::array<VertexIndex, 3>> corners(mesh.triangles.begin(), mesh.triangles.end());
+  for (auto& c : corners) std::sort(c.begin(), c.end());
+  tbb::parallel_sort(corners.begin(), corners.end());
+  return std::adjacent_find(corners.begin(), corners.end()) == corners.end();
+}
+
 struct SoupMesh::Impl {
   const IndexedMesh& input;
   ExactSliceReport report;
@@ -65,7 +93,15 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
   polygons.reserve(input.triangles.size());
   for (const auto& t : input.triangles) polygons.push_back({t[0], t[1], t[2]});
 
-  PMP::repair_polygon_soup(points, polygons);
+  // A clean soup (the usual one: welded, no facet with a repeated corner, none twice) is one
+  // CGAL's repair would only take its unused points from; the facets then keep their indices,
+  // and face i of the mesh is input facet i.
+  const bool clean = is_clean_soup(input);
+  if (clean) {
+    PMP::remove_isolated_points_in_polygon_soup(points, polygons);
+  } else {
+    PMP::repair_polygon_soup(points, polygons);
+  }
   d.report.points_merged = input.vertices.size() - points.size();
   d.report.polygons_removed = input.triangles.size() - polygons.size();
 
@@ -74,6 +110,8 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
   d.report.polygons_reversed = counters.reversed;
   d.report.non_manifold_edges = counters.non_manifold_edges.size();
 
+  // Orientation reverses and splits, but neither drops nor reorders polygons: checked.
+  const bool facet_order = clean && polygons.size() == input.triangles.size();
   d.facet_face.assign(input.triangles.size(), kNone);
   // CGAL's own check (PMP::is_polygon_soup_a_polygon_mesh) gives the same answer with a tree
   // node per halfedge: the largest allocation of the exact path.
@@ -93,8 +131,9 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
     const auto& t = input.triangles[f];
     return soup::position_key({input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]});
   };
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> by_hash(input.triangles.size());
-  for (std::size_t f = 0; f < input.triangles.size(); ++f) {
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> by_hash(
+      facet_order ? 0 : input.triangles.size());
+  for (std::size_t f = 0; f < by_hash.size(); ++f) {
     const auto facet = static_cast<std::uint32_t>(f);
     by_hash[f] = {soup::DoublesHash{}(key_of_facet(facet)), facet};
   }
@@ -121,9 +160,10 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
       ++corners;
     }
     if (!matches || corners != 3) return;  // not the face of polygon i: no halfedge path at all
-    const soup::PositionKey k = soup::position_key(
-        {d.vertex_position[p[0]], d.vertex_position[p[1]], d.vertex_position[p[2]]});
-    const std::uint32_t facet = facet_at(k);
+    const std::uint32_t facet =
+        facet_order ? static_cast<std::uint32_t>(i)
+                    : facet_at(soup::position_key({d.vertex_position[p[0]], d.vertex_position[p[1]],
+                                                   d.vertex_position[p[2]]}));
     if (facet == kNone) continue;
     d.face_facet[i] = facet;
     d.facet_face[facet] = static_cast<std::uint32_t>(i);

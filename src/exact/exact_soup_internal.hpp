@@ -11,6 +11,14 @@
 
 namespace strata::exact::detail {
 
+/// Whether CGAL's repair_polygon_soup would do no more to the mesh's soup than remove its unused
+/// points (remove_isolated_points_in_polygon_soup): no two vertices at one position (CGAL merges
+/// those first; +0 and -0 are one), no facet with a repeated corner, no two facets on the same
+/// three vertices (it keeps one). Facets stay triangles, so its other steps (consecutive repeats,
+/// pinched or short polygons) find nothing either. SoupMesh then skips the repair's other steps
+/// and knows each face's input facet by its index.
+bool is_clean_soup(const IndexedMesh& mesh);
+
 /// The mesh read as a polygon soup into CGAL, repaired (repair_polygon_soup) and oriented
 /// (orient_polygon_soup), and, when that is a polygon mesh, held as a CGAL::Surface_mesh whose
 /// faces know the input facet they come from. The repair never changes the slice: segment
