@@ -105,7 +105,12 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
   d.report.points_merged = input.vertices.size() - points.size();
   d.report.polygons_removed = input.triangles.size() - polygons.size();
 
-  const soup::OrientSoupCounts counters = soup::orient_soup(points, polygons);
+  // A clean soup that is already a polygon mesh has every shared edge used both ways and no
+  // singular vertex: CGAL's orientation would reverse, split and report nothing, so it is not run.
+  const bool already_mesh =
+      clean && !polygons.empty() && soup::is_polygon_mesh(polygons, points.size());
+  const soup::OrientSoupCounts counters =
+      already_mesh ? soup::OrientSoupCounts{} : soup::orient_soup(points, polygons);
   d.report.points_duplicated = counters.points_added;
   d.report.polygons_reversed = counters.reversed;
   d.report.non_manifold_edges = counters.non_manifold_edges.size();
@@ -115,7 +120,9 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
   d.facet_face.assign(input.triangles.size(), kNone);
   // CGAL's own check (PMP::is_polygon_soup_a_polygon_mesh) gives the same answer with a tree
   // node per halfedge: the largest allocation of the exact path.
-  if (polygons.empty() || !soup::is_polygon_mesh(polygons, points.size())) return;
+  if (polygons.empty() || !(already_mesh || soup::is_polygon_mesh(polygons, points.size()))) {
+    return;
+  }
   PMP::polygon_soup_to_polygon_mesh(points, polygons, d.mesh);
   // The conversion adds vertex i for point i and face i for polygon i; check it did.
   if (d.mesh.number_of_vertices() != points.size() || d.mesh.number_of_faces() != polygons.size()) {

@@ -1,6 +1,7 @@
 // soup::is_polygon_mesh gives CGAL's answer (is_polygon_soup_a_polygon_mesh) on every soup.
 #include "soup/polygon_mesh_check.hpp"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "soup/orient_soup_visitor.hpp"
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
 
@@ -110,6 +112,45 @@ TEST(IsPolygonMesh, AgreesWithCgalOnASphereAndItsDamage) {
     split.push_back(p);
   }
   EXPECT_EQ(is_polygon_mesh(split, sphere.vertices.size()), cgal_says(split));
+}
+
+TEST(IsPolygonMesh, ASoupThatIsOneIsLeftAsItIsByCgalsOrientation) {
+  // What lets the exact path skip the orientation of such a soup: nothing reversed, split or
+  // reported, on random soups and on a sphere.
+  std::mt19937 random(99);
+  std::size_t meshes = 0;
+  for (int trial = 0; trial < 20'000; ++trial) {
+    const std::size_t vertex_count = 3 + random() % 6;
+    Soup polygons(1 + random() % 8);
+    for (Polygon& p : polygons) {
+      while (p.size() < 3) {
+        const std::size_t v = random() % vertex_count;
+        if (std::find(p.begin(), p.end(), v) == p.end()) p.push_back(v);
+      }
+    }
+    if (!is_polygon_mesh(polygons, vertex_count)) continue;
+    ++meshes;
+    std::vector<CGAL::Epick::Point_3> points;
+    for (std::size_t v = 0; v < vertex_count; ++v) points.emplace_back(v, v * v, 1.0 / (v + 1));
+    const Soup before = polygons;
+    const OrientSoupCounts counts = orient_soup(points, polygons);
+    ASSERT_EQ(polygons, before) << "trial " << trial;
+    ASSERT_EQ(points.size(), vertex_count) << "trial " << trial;
+    ASSERT_EQ(counts.reversed, 0u) << "trial " << trial;
+    ASSERT_TRUE(counts.non_manifold_edges.empty()) << "trial " << trial;
+    ASSERT_EQ(counts.points_added, 0u) << "trial " << trial;
+  }
+  EXPECT_GT(meshes, 2'000u);
+  const IndexedMesh sphere = weld_vertices(mesh::make_sphere(10.0, 3));
+  Soup polygons;
+  for (const auto& t : sphere.triangles) polygons.push_back({t[0], t[1], t[2]});
+  std::vector<CGAL::Epick::Point_3> points;
+  for (const Vec3& v : sphere.vertices) points.emplace_back(v.x, v.y, v.z);
+  const Soup before = polygons;
+  const OrientSoupCounts counts = orient_soup(points, polygons);
+  EXPECT_EQ(polygons, before);
+  EXPECT_EQ(counts.reversed, 0u);
+  EXPECT_EQ(counts.points_added, 0u);
 }
 
 }  // namespace
