@@ -1,4 +1,8 @@
+#include <mpfr.h>
+
 #include <algorithm>
+#include <climits>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -39,6 +43,118 @@ std::uint32_t count_prefix(std::uint32_t n, const Pred& below) {
   return lo;
 }
 
+/// The exact crossings of one facet with the scanlines of a layer, on integers. The crossing of
+/// row y with the facet's plane at height z is
+///   x = a.x - (n.y (y - a.y) + n.z (z - a.z)) / n.x,  n = (b - a) x (c - a),
+/// the point where the row meets the facet's segment (n.x is not 0 for a segment that crosses
+/// rows). With every input an integer times 2^E (E the smallest exponent among them; capital
+/// letters for the values over 2^E, n in units of 2^2E):
+///   x = 2^E (K - n.y Y) / n.x,  K = A.x n.x + n.y A.y - n.z (Z - A.z),
+/// one product and one difference a row, then one correctly rounded MPFR division: no rational
+/// reduced, nothing allocated once the scratch values have grown.
+class RowCrossings {
+ public:
+  RowCrossings() {
+    mpfr_init2(num_, 64);
+    mpfr_init2(den_, 64);
+    mpfr_init2(quotient_, 53);
+  }
+  ~RowCrossings() {
+    mpfr_clear(num_);
+    mpfr_clear(den_);
+    mpfr_clear(quotient_);
+  }
+  RowCrossings(const RowCrossings&) = delete;
+  RowCrossings& operator=(const RowCrossings&) = delete;
+
+  /// The facet abc at height z, for rows whose y values have exponents of at least `e_rows`
+  /// (ilogb(y) - 52 over the nonzero ones).
+  void start(const Vec3& a, const Vec3& b, const Vec3& c, double z, int e_rows) {
+    e_ = e_rows;
+    for (const double v : {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, z}) {
+      if (v != 0.0) e_ = std::min(e_, std::ilogb(v) - 52);
+    }
+    set_scaled(ax_, a.x, e_);
+    set_scaled(ay_, a.y, e_);
+    set_scaled(az_, a.z, e_);
+    set_scaled(t1_, b.y, e_);  // B.y - A.y
+    t1_ -= ay_;
+    set_scaled(t2_, c.z, e_);  // C.z - A.z
+    t2_ -= az_;
+    set_scaled(t3_, b.z, e_);  // B.z - A.z
+    t3_ -= az_;
+    set_scaled(t4_, c.y, e_);  // C.y - A.y
+    t4_ -= ay_;
+    nx_ = t1_ * t2_ - t3_ * t4_;
+    set_scaled(t5_, b.x, e_);  // B.x - A.x
+    t5_ -= ax_;
+    set_scaled(t6_, c.x, e_);  // C.x - A.x
+    t6_ -= ax_;
+    ny_ = t3_ * t6_ - t5_ * t2_;
+    nz_ = t5_ * t4_ - t1_ * t6_;
+    set_scaled(t1_, z, e_);
+    t1_ -= az_;
+    k_ = ax_ * nx_ + ny_ * ay_ - nz_ * t1_;
+    set_exact(den_, nx_);
+  }
+
+  /// The nearest double to the crossing of row y (ties to even), as round_to_double would give.
+  double rounded(double y) {
+    set_scaled(t1_, y, e_);
+    x_ = k_ - ny_ * t1_;
+    set_exact(num_, x_);
+    mpfr_div(quotient_, num_, den_, MPFR_RNDN);
+    if (mpfr_zero_p(quotient_)) return 0.0;
+    mpfr_mul_2si(quotient_, quotient_, e_, MPFR_RNDN);  // exact: MPFR's exponent is unbounded
+    if (mpfr_get_exp(quotient_) >= -1021) return mpfr_get_d(quotient_, MPFR_RNDN);
+    // Below the normal doubles: the rational's own rounding, which rounds once there too.
+    mpq_set_num(q_.get_mpq_t(), x_.get_mpz_t());
+    mpq_set_den(q_.get_mpq_t(), nx_.get_mpz_t());
+    mpq_canonicalize(q_.get_mpq_t());
+    if (e_ > 0) mpq_mul_2exp(q_.get_mpq_t(), q_.get_mpq_t(), static_cast<mp_bitcnt_t>(e_));
+    if (e_ < 0) mpq_div_2exp(q_.get_mpq_t(), q_.get_mpq_t(), static_cast<mp_bitcnt_t>(-e_));
+    return round_to_double(q_.get_mpq_t());
+  }
+
+  /// Sign of (x - d) for the crossing of the row last passed to rounded(), exact.
+  int compare(double d) {
+    // x - d = (X 2^E - d n.x) / n.x, on integers over 2^F, F = min(E, exponent of d).
+    const int f = d == 0.0 ? e_ : std::min(e_, std::ilogb(d) - 52);
+    set_scaled(t1_, d, f);
+    t1_ *= nx_;
+    t2_ = x_;
+    if (e_ > f) mpz_mul_2exp(t2_.get_mpz_t(), t2_.get_mpz_t(), static_cast<mp_bitcnt_t>(e_ - f));
+    return sgn(t2_ - t1_) * sgn(nx_);
+  }
+
+ private:
+  /// out = v / 2^e, an integer (v is a multiple of 2^e).
+  static void set_scaled(mpz_class& out, double v, int e) {
+    if (v == 0.0) {
+      out = 0;
+      return;
+    }
+    int exponent = 0;
+    const double m = std::frexp(v, &exponent);  // v = m 2^exponent, 0.5 <= |m| < 1
+    out = std::ldexp(m, 53);                    // an integer of at most 53 bits
+    const int shift = exponent - 53 - e;        // >= 0 by the choice of e
+    if (shift > 0) mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
+  }
+  /// out = v exactly, its precision grown to v's bits.
+  static void set_exact(mpfr_ptr out, const mpz_class& v) {
+    const std::size_t bits = std::max<std::size_t>(mpz_sizeinbase(v.get_mpz_t(), 2), 2);
+    if (static_cast<std::size_t>(mpfr_get_prec(out)) < bits) {
+      mpfr_set_prec(out, static_cast<mpfr_prec_t>(bits));
+    }
+    mpfr_set_z(out, v.get_mpz_t(), MPFR_RNDN);  // exact: the precision holds every bit
+  }
+
+  int e_ = 0;
+  mpz_class ax_, ay_, az_, nx_, ny_, nz_, k_, x_, t1_, t2_, t3_, t4_, t5_, t6_;
+  mpq_class q_;
+  mpfr_t num_, den_, quotient_;
+};
+
 /// Counts the comparisons of an exact value with a double that the nearest double left tied.
 class TieCounter {
  public:
@@ -46,13 +162,12 @@ class TieCounter {
     if (q.rounded == d) ++ties_;
     return compare_with_double(q, d);
   }
-  /// Sign of (q - d) for q whose nearest double is `rounded`; `scratch` is reused.
-  int compare(mpq_srcptr q, double rounded, double d, mpq_class& scratch) {
+  /// Sign of (x - d) for the crossing `row` last rounded to `rounded`.
+  int compare(RowCrossings& row, double rounded, double d) {
     if (rounded < d) return -1;
     if (rounded > d) return 1;
     ++ties_;
-    scratch = d;
-    return mpq_cmp(q, scratch.get_mpq_t());
+    return row.compare(d);
   }
   std::uint64_t ties() const { return ties_; }
 
@@ -99,8 +214,8 @@ void fill_row(FillRule rule, const GridSpec& grid, std::vector<ScanCrossing>::it
 
 }  // namespace
 
-LayerFill fill_layer(const ExactLayer& layer, const GridSpec& grid, FillRule rule,
-                     double scan_offset_mm) {
+LayerFill fill_layer(const IndexedMesh& mesh, const ExactLayer& layer, const GridSpec& grid,
+                     FillRule rule, double scan_offset_mm) {
   LayerFill out;
   out.layer = layer.layer;
   out.solid.assign(grid.cells_per_layer(), 0);
@@ -112,9 +227,7 @@ LayerFill fill_layer(const ExactLayer& layer, const GridSpec& grid, FillRule rul
   };
 
   std::vector<ScanCrossing> crossings;
-  mpq_class y_row;
-  mpq_class x_exact;
-  mpq_class scratch;
+  RowCrossings row_crossings;
   for (const ExactSegment& s : layer.segments) {
     if (s.zero_length) continue;
     const std::uint32_t rows_start = rows_at_or_below(s.start.y);
@@ -128,20 +241,21 @@ LayerFill fill_layer(const ExactLayer& layer, const GridSpec& grid, FillRule rul
     // layer_segments.hpp agree); a mismatch would be a broken cut, not bad input.
     STRATA_ASSERT((rows_end > rows_start) == (s.normal_x_sign > 0) && s.normal_x_sign != 0,
                   "segment direction disagrees with the facet normal");
-    // Along the segment x = a + b * y, with b = dx / dy: one multiplication and one addition a
-    // row, in place, on scratch values that keep their storage.
-    const Rational b = (s.end.x.exact - s.start.x.exact) / (s.end.y.exact - s.start.y.exact);
-    const Rational a = s.start.x.exact - b * s.start.y.exact;
+    const auto& corners = mesh.triangles[s.facet];
+    int e_rows = INT_MAX;
     for (std::uint32_t j = first; j < last; ++j) {
-      y_row = row_y(j);
-      mpq_mul(x_exact.get_mpq_t(), raw_mpq(b), y_row.get_mpq_t());
-      mpq_add(x_exact.get_mpq_t(), x_exact.get_mpq_t(), raw_mpq(a));
+      const double y = row_y(j);
+      if (y != 0.0) e_rows = std::min(e_rows, std::ilogb(y) - 52);
+    }
+    row_crossings.start(mesh.vertices[corners[0]], mesh.vertices[corners[1]],
+                        mesh.vertices[corners[2]], layer.z_mm, e_rows);
+    for (std::uint32_t j = first; j < last; ++j) {
       ScanCrossing c;
       c.row = j;
       c.weight = weight;
-      c.x = round_to_double(x_exact.get_mpq_t());
+      c.x = row_crossings.rounded(row_y(j));
       c.cells_left = count_prefix(grid.nx, [&](std::uint32_t i) {
-        return ties.compare(x_exact.get_mpq_t(), c.x, grid.xc(i), scratch) > 0;
+        return ties.compare(row_crossings, c.x, grid.xc(i)) > 0;
       });
       crossings.push_back(c);
     }

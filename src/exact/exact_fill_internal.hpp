@@ -2,6 +2,7 @@
 
 #include "exact/exact_numbers_internal.hpp"
 #include "strata/fill/scanline_fill.hpp"
+#include "strata/mesh/indexed_mesh.hpp"
 #include "strata/slice/grid_spec.hpp"
 #include "strata/slice/slice_options.hpp"
 
@@ -14,7 +15,9 @@ namespace strata::exact::detail {
 /// Hatches are the inside intervals of each scanline between crossings rounded once to double.
 /// `exact_fallbacks` counts the comparisons that the nearest doubles left tied.
 /// @pre rule is NonZero or EvenOdd.
-LayerFill fill_layer(const ExactLayer& layer, const GridSpec& grid, FillRule rule,
-                     double scan_offset_mm);
+/// The crossings are computed from the plane of each segment's facet in `mesh` (the mesh the
+/// layer was cut from).
+LayerFill fill_layer(const IndexedMesh& mesh, const ExactLayer& layer, const GridSpec& grid,
+                     FillRule rule, double scan_offset_mm);
 
 }  // namespace strata::exact::detail
