@@ -18,9 +18,7 @@ class CrossingCalculator {
   ExactPoint2 operator()(const Vec3& lo, const Vec3& hi, double z) {
     if (hi.z == z) return {RoundedRational(Rational(hi.x)), RoundedRational(Rational(hi.y))};
     int e = std::numeric_limits<int>::max();
-    for (const double v : {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z, z}) {
-      if (v != 0.0) e = std::min(e, std::ilogb(v) - 52);
-    }
+    for (const double v : {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z, z}) lower_to_last_bit(e, v);
     set_scaled(lz_, lo.z, e);
     set_scaled(w_, hi.z, e);
     w_ -= lz_;
@@ -30,15 +28,6 @@ class CrossingCalculator {
   }
 
  private:
-  /// out = v / 2^e, an integer (v is a multiple of 2^e).
-  static void set_scaled(mpz_class& out, double v, int e) {
-    int exponent = 0;
-    const double m = std::frexp(v, &exponent);  // v = m 2^exponent, 0.5 <= |m| < 1
-    out = std::ldexp(m, 53);                    // an integer of at most 53 bits
-    const int shift = exponent - 53 - e;        // >= 0 by the choice of e
-    if (shift > 0) mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
-  }
-
   RoundedRational along(double a, double b, int e) {
     if (a == b) return RoundedRational(Rational(a));
     set_scaled(la_, a, e);
@@ -47,11 +36,7 @@ class CrossingCalculator {
     lb_ *= t_;   // T (HX - LX)
     la_ *= w_;   // LX W
     la_ += lb_;  // numerator
-    mpq_set_num(q_.get_mpq_t(), la_.get_mpz_t());
-    mpq_set_den(q_.get_mpq_t(), w_.get_mpz_t());
-    mpq_canonicalize(q_.get_mpq_t());
-    if (e > 0) mpq_mul_2exp(q_.get_mpq_t(), q_.get_mpq_t(), static_cast<mp_bitcnt_t>(e));
-    if (e < 0) mpq_div_2exp(q_.get_mpq_t(), q_.get_mpq_t(), static_cast<mp_bitcnt_t>(-e));
+    set_scaled_quotient(q_, la_, w_, e);
     return RoundedRational(Rational(q_));
   }
 

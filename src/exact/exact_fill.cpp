@@ -71,9 +71,8 @@ class RowCrossings {
   /// (ilogb(y) - 52 over the nonzero ones).
   void start(const Vec3& a, const Vec3& b, const Vec3& c, double z, int e_rows) {
     e_ = e_rows;
-    for (const double v : {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, z}) {
-      if (v != 0.0) e_ = std::min(e_, std::ilogb(v) - 52);
-    }
+    for (const double v : {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, z})
+      lower_to_last_bit(e_, v);
     set_scaled(ax_, a.x, e_);
     set_scaled(ay_, a.y, e_);
     set_scaled(az_, a.z, e_);
@@ -108,18 +107,15 @@ class RowCrossings {
     mpfr_mul_2si(quotient_, quotient_, e_, MPFR_RNDN);  // exact: MPFR's exponent is unbounded
     if (mpfr_get_exp(quotient_) >= -1021) return mpfr_get_d(quotient_, MPFR_RNDN);
     // Below the normal doubles: the rational's own rounding, which rounds once there too.
-    mpq_set_num(q_.get_mpq_t(), x_.get_mpz_t());
-    mpq_set_den(q_.get_mpq_t(), nx_.get_mpz_t());
-    mpq_canonicalize(q_.get_mpq_t());
-    if (e_ > 0) mpq_mul_2exp(q_.get_mpq_t(), q_.get_mpq_t(), static_cast<mp_bitcnt_t>(e_));
-    if (e_ < 0) mpq_div_2exp(q_.get_mpq_t(), q_.get_mpq_t(), static_cast<mp_bitcnt_t>(-e_));
+    set_scaled_quotient(q_, x_, nx_, e_);
     return round_to_double(q_.get_mpq_t());
   }
 
   /// Sign of (x - d) for the crossing of the row last passed to rounded(), exact.
   int compare(double d) {
     // x - d = (X 2^E - d n.x) / n.x, on integers over 2^F, F = min(E, exponent of d).
-    const int f = d == 0.0 ? e_ : std::min(e_, std::ilogb(d) - 52);
+    int f = e_;
+    lower_to_last_bit(f, d);
     set_scaled(t1_, d, f);
     t1_ *= nx_;
     t2_ = x_;
@@ -128,18 +124,6 @@ class RowCrossings {
   }
 
  private:
-  /// out = v / 2^e, an integer (v is a multiple of 2^e).
-  static void set_scaled(mpz_class& out, double v, int e) {
-    if (v == 0.0) {
-      out = 0;
-      return;
-    }
-    int exponent = 0;
-    const double m = std::frexp(v, &exponent);  // v = m 2^exponent, 0.5 <= |m| < 1
-    out = std::ldexp(m, 53);                    // an integer of at most 53 bits
-    const int shift = exponent - 53 - e;        // >= 0 by the choice of e
-    if (shift > 0) mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
-  }
   /// out = v exactly, its precision grown to v's bits.
   static void set_exact(mpfr_ptr out, const mpz_class& v) {
     const std::size_t bits = std::max<std::size_t>(mpz_sizeinbase(v.get_mpz_t(), 2), 2);
@@ -244,8 +228,7 @@ LayerFill fill_layer(const IndexedMesh& mesh, const ExactLayer& layer, const Gri
     const auto& corners = mesh.triangles[s.facet];
     int e_rows = INT_MAX;
     for (std::uint32_t j = first; j < last; ++j) {
-      const double y = row_y(j);
-      if (y != 0.0) e_rows = std::min(e_rows, std::ilogb(y) - 52);
+      lower_to_last_bit(e_rows, row_y(j));
     }
     row_crossings.start(mesh.vertices[corners[0]], mesh.vertices[corners[1]],
                         mesh.vertices[corners[2]], layer.z_mm, e_rows);

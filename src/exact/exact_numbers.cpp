@@ -60,6 +60,26 @@ double round_to_double(mpq_srcptr q) {
   return mpfr_get_d(r, MPFR_RNDN);
 }
 
+void set_scaled(mpz_class& out, double v, int e) {
+  if (v == 0.0) {
+    out = 0;
+    return;
+  }
+  int exponent = 0;
+  const double m = std::frexp(v, &exponent);  // v = m 2^exponent, 0.5 <= |m| < 1
+  out = std::ldexp(m, 53);                    // an integer of at most 53 bits
+  const int shift = exponent - 53 - e;        // >= 0 by the choice of e
+  if (shift > 0) mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
+}
+
+void set_scaled_quotient(mpq_class& out, const mpz_class& num, const mpz_class& den, int e) {
+  mpq_set_num(out.get_mpq_t(), num.get_mpz_t());
+  mpq_set_den(out.get_mpq_t(), den.get_mpz_t());
+  mpq_canonicalize(out.get_mpq_t());
+  if (e > 0) mpq_mul_2exp(out.get_mpq_t(), out.get_mpq_t(), static_cast<mp_bitcnt_t>(e));
+  if (e < 0) mpq_div_2exp(out.get_mpq_t(), out.get_mpq_t(), static_cast<mp_bitcnt_t>(-e));
+}
+
 int compare_with_double(const RoundedRational& q, double d) {
   if (q.rounded < d) return -1;
   if (q.rounded > d) return 1;

@@ -3,6 +3,10 @@
 // Exact rationals of the exact path: the exact number type of CGAL's Epeck (GMP rationals), so
 // values built here feed Epeck points without conversion.
 
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -11,6 +15,18 @@
 #include "strata/slice/layer_segments.hpp"
 
 namespace strata::exact::detail {
+
+/// Lowers `e` to the exponent of v's last mantissa bit, ilogb(v) - 52, unless v is zero: with e
+/// lowered over several doubles, each of them is an integer times 2^e (start from INT_MAX).
+inline void lower_to_last_bit(int& e, double v) {
+  if (v != 0.0) e = std::min(e, std::ilogb(v) - 52);
+}
+
+/// out = v / 2^e, an integer: v is a multiple of 2^e (e lowered over v by lower_to_last_bit).
+void set_scaled(mpz_class& out, double v, int e);
+
+/// out = 2^e num / den, reduced. @pre den is not zero.
+void set_scaled_quotient(mpq_class& out, const mpz_class& num, const mpz_class& den, int e);
 
 /// An exact value with its nearest double, so comparisons with doubles are decided by the double
 /// unless they tie (rounding to nearest is monotone: round(q) < d implies q < d).
