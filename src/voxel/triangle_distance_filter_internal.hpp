@@ -41,6 +41,7 @@ class TriangleDistanceFilter {
         const Vec3 e = sub(*v[(i + 1) % 3], *v[i]);
         m_[i] = cross(e, n_);  // outward in-plane normal of edge i
         mm_[i] = dot(m_[i], m_[i]);
+        has_edge_[i] = mm_[i] > 2.0 * err_mm;
         inv_mm_[i] = 1.0 / (mm_[i] + err_mm);
       }
       inv_nn_ = 1.0 / (nn_ + err_nn_);
@@ -80,9 +81,8 @@ class TriangleDistanceFilter {
       double edge2 = 0.0;
       const Vec3* v[3] = {&a_, &b_, &c_};
       const double err_m_dot = 600.0 * kU * l2 * scale_ * w_scale;
-      const double err_mm = 6000.0 * kU * l2 * l2 * l2;
       for (int i = 0; i < 3; ++i) {
-        if (!(mm_[i] > 2.0 * err_mm)) continue;
+        if (!has_edge_[i]) continue;
         const double mw = dot(m_[i], sub(p, *v[i])) - err_m_dot;
         if (mw > 0.0) edge2 = std::max(edge2, mw * mw * inv_mm_[i]);
       }
@@ -128,8 +128,6 @@ class TriangleDistanceFilter {
                  RowBound* out) const {
     if (!has_plane_) return 0;
     int count = 0;
-    const double l2 = scale_ * scale_;
-    const double err_mm = 6000.0 * kU * l2 * l2 * l2;
     const double width = x_hi - x_lo;
     const auto add = [&](const Vec3& m, double len, const Vec3& v, bool two_sided) {
       if (!(std::fabs(m.x) >= 1e-3 * len)) return;
@@ -149,7 +147,7 @@ class TriangleDistanceFilter {
     add(n_, len_, a_, true);
     const Vec3* v[3] = {&a_, &b_, &c_};
     for (int i = 0; i < 3; ++i) {
-      if (mm_[i] > 2.0 * err_mm) add(m_[i], std::sqrt(mm_[i]), *v[i], false);
+      if (has_edge_[i]) add(m_[i], std::sqrt(mm_[i]), *v[i], false);
     }
     return count;
   }
@@ -233,6 +231,9 @@ class TriangleDistanceFilter {
   bool has_plane_ = false;
   Vec3 m_[3];
   double mm_[3] = {0.0, 0.0, 0.0};
+  /// Whether edge i's |m|^2 is reliably above its rounding (6000 u l^6): only then does the edge
+  /// bound a rejection or a row.
+  bool has_edge_[3] = {false, false, false};
   double inv_mm_[3] = {0.0, 0.0, 0.0};  ///< 1 / (mm_ + its error bound)
   double inv_nn_ = 0.0;                 ///< 1 / (nn_ + err_nn_)
 };
