@@ -1,7 +1,8 @@
 #pragma once
 
-// Shared by the exact path and repair: both find a triangle again by where its corners are,
-// whatever their order and whatever the vertex indices.
+// Shared by the exact path and repair, which find a triangle again by where its corners are
+// (whatever their order and the vertex indices), and the view's display mesh, which finds
+// vertices at one position.
 
 #include <algorithm>
 #include <array>

@@ -17,6 +17,8 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "soup/position_key.hpp"
+
 namespace strata::view {
 
 namespace {
@@ -98,10 +100,9 @@ class Clustering {
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>, KeyHash> by_hash;
     for (std::size_t v = 0; v < keys_.size(); ++v) {
       const Vec3& p = mesh_.vertices[v];
+      // +0.0: the two zeros, which compare equal, hash alike.
       const std::uint64_t h =
-          TriangleHash{}({static_cast<std::uint32_t>(std::hash<double>{}(p.x)),
-                          static_cast<std::uint32_t>(std::hash<double>{}(p.y)),
-                          static_cast<std::uint32_t>(std::hash<double>{}(p.z))});
+          soup::DoublesHash{}(std::array<double, 3>{p.x + 0.0, p.y + 0.0, p.z + 0.0});
       std::vector<std::uint32_t>& same_hash = by_hash[h];
       keys_[v] = v;
       for (const std::uint32_t w : same_hash) {
