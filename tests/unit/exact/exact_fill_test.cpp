@@ -11,25 +11,10 @@
 namespace strata::exact_test {
 namespace {
 
-/// The box [lo, hi] with double corners, outward facets.
-IndexedMesh double_box(const Vec3& lo, const Vec3& hi) {
-  IndexedMesh m;
-  for (int k = 0; k < 8; ++k) {
-    m.vertices.push_back({(k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z});
-  }
-  add_quad(m, 0, 2, 3, 1);  // z = lo
-  add_quad(m, 4, 5, 7, 6);  // z = hi
-  add_quad(m, 0, 1, 5, 4);  // y = lo
-  add_quad(m, 2, 6, 7, 3);  // y = hi
-  add_quad(m, 0, 4, 6, 2);  // x = lo
-  add_quad(m, 1, 3, 7, 5);  // x = hi
-  return m;
-}
-
 TEST(ExactFill, ACrossingAmongTheSubnormalDoublesIsThatDoubleExactly) {
   const double tiny = 3e-310;  // subnormal
   ASSERT_LT(tiny, std::numeric_limits<double>::min());
-  const IndexedMesh box = double_box({tiny, 0.0, 0.0}, {1.0, 1.0, 1.0});
+  const IndexedMesh box = test::indexed_box_lo_hi_diagonals({tiny, 0.0, 0.0}, {1.0, 1.0, 1.0});
   GridSpec grid;
   grid.x0 = -0.5;
   grid.y0 = 0.0;
