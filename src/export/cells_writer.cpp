@@ -16,6 +16,7 @@ namespace {
 constexpr const char* kKind = "cells writer";
 // Packed bytes handed to the file at a time: keeps the buffer small on layers of 10^8 cells.
 constexpr std::size_t kChunkBytes = std::size_t{1} << 16;
+constexpr std::uint64_t kAheadBytes = std::uint64_t{1} << 24;
 
 Error reserved_code_error(std::uint32_t k, std::uint64_t index, std::uint32_t nx, CellClass code) {
   return Error{ErrorCode::Internal,
@@ -59,7 +60,10 @@ class BinaryCellsWriter final : public detail::SingleFileSink {
     return {};
   }
 
-  Result<void> write_layer(OutputFile& out, const LayerResult& layer) override {
+  // A layer of up to 16 MB packed is held to be packed ahead; a larger one is streamed.
+  bool encodes_ahead() const override { return run().grid.cells_per_layer() / 4 <= kAheadBytes; }
+
+  Result<void> write_layer(detail::LayerBytes& out, const LayerResult& layer) const override {
     const std::span<const CellClass> cells = layer.cells;
     const std::size_t n = cells.size();
     std::string chunk;
@@ -96,7 +100,10 @@ class AsciiCellsWriter final : public detail::SingleFileSink {
     return {};
   }
 
-  Result<void> write_layer(OutputFile& out, const LayerResult& layer) override {
+  // Two characters a cell: a layer is streamed, not held.
+  bool encodes_ahead() const override { return false; }
+
+  Result<void> write_layer(detail::LayerBytes& out, const LayerResult& layer) const override {
     const GridSpec& g = run().grid;
     // Indices count from the file's first layer; z is the plane of the whole grid, so that a
     // range's layer lines are those of a whole run but for the index.

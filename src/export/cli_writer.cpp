@@ -57,7 +57,7 @@ class CliWriter final : public detail::SingleFileSink {
     return {};
   }
 
-  Result<void> write_layer(OutputFile& out, const LayerResult& layer) override {
+  Result<void> write_layer(detail::LayerBytes& out, const LayerResult& layer) const override {
     const GridSpec& g = run().grid;
     // The CLI's layer height is the top of the layer; the contours are its middle-plane section.
     const double z_top = g.z0 + (static_cast<double>(layer.layer) + 1.0) * g.dz;
@@ -75,14 +75,14 @@ class CliWriter final : public detail::SingleFileSink {
   }
 
  private:
-  static void flush_if_large(OutputFile& out, std::string& s) {
+  static void flush_if_large(detail::LayerBytes& out, std::string& s) {
     if (s.size() >= kFlushBytes) {
       out.write(s);
       s.clear();
     }
   }
 
-  void write_ascii_layer(OutputFile& out, const LayerResult& layer, double z_top) {
+  void write_ascii_layer(detail::LayerBytes& out, const LayerResult& layer, double z_top) const {
     std::string s = "$$LAYER/";
     detail::append_number(s, z_top);
     s += '\n';
@@ -116,7 +116,7 @@ class CliWriter final : public detail::SingleFileSink {
     out.write(s);
   }
 
-  void write_binary_layer(OutputFile& out, const LayerResult& layer, double z_top) {
+  void write_binary_layer(detail::LayerBytes& out, const LayerResult& layer, double z_top) const {
     std::string s;
     detail::put_u16_le(s, kCliLayerLong);
     detail::put_f32_le(s, static_cast<float>(z_top));

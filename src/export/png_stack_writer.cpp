@@ -20,7 +20,7 @@ namespace {
 
 /// What the libpng callbacks need; plain data, because libpng reports errors with longjmp.
 struct PngTarget {
-  OutputFile* out = nullptr;
+  detail::LayerBytes* out = nullptr;
   char message[256] = {};
 };
 
@@ -112,15 +112,15 @@ class PngStackWriter final : public detail::LayerFilesSink {
   bool needs_cells() const override { return true; }
 
  protected:
-  Result<void> write_layer(OutputFile& out, const LayerResult& layer) override {
+  Result<void> write_layer(detail::LayerBytes& out, const LayerResult& layer) const override {
     const GridSpec& g = run().grid;
-    row_buffer_.resize(g.nx);
+    std::vector<std::uint8_t> row_buffer(g.nx);
     PngImage image;
     image.width = g.nx;
     image.height = g.ny;
     image.cells = layer.cells.data();
     image.grey = {options_.empty, options_.interior, options_.empty, options_.boundary};
-    image.row_buffer = row_buffer_.data();
+    image.row_buffer = row_buffer.data();
     image.compression_level = std::clamp(options_.compression_level, 0, 9);
     image.pixels_per_metre_x = pixels_per_metre(g.dx);
     image.pixels_per_metre_y = pixels_per_metre(g.dy);
@@ -133,14 +133,13 @@ class PngStackWriter final : public detail::LayerFilesSink {
       return Error{
           ErrorCode::Internal,
           fmt::format("cannot encode the PNG of layer {}: {}", layer.layer, target.message),
-          out.path().string()};
+          layer_path(layer.layer).string()};
     }
     return {};
   }
 
  private:
   PngOptions options_;
-  std::vector<std::uint8_t> row_buffer_;
 };
 
 }  // namespace

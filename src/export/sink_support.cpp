@@ -13,6 +13,26 @@ Error internal_error(const char* kind, std::string message) {
   return Error{ErrorCode::Internal, fmt::format("{}: {}", kind, message), {}};
 }
 
+/// Whether a layer handed to prepare_layer is one a writer can read: the engine's layers are,
+/// and one that is not is left to add_layer's checks, which report it.
+bool fits_grid(const LayerResult& layer, bool needs_cells, const GridSpec& grid) {
+  return !needs_cells || layer.cells.size() == grid.cells_per_layer();
+}
+
+template <typename Write>
+std::unique_ptr<PreparedLayer> encode_ahead(const LayerResult& layer, Write&& write) {
+  auto encoded = std::make_unique<EncodedLayer>(layer.layer, Result<void>{});
+  LayerBytes out{encoded->bytes};
+  encoded->encoded = write(out);
+  return encoded;
+}
+
+/// What prepare_layer made of `layer`, or null when it made nothing of it.
+const EncodedLayer* encoded_for(const LayerResult& layer, const PreparedLayer* prepared) {
+  const auto* encoded = dynamic_cast<const EncodedLayer*>(prepared);
+  return encoded != nullptr && encoded->layer == layer.layer ? encoded : nullptr;
+}
+
 }  // namespace
 
 Result<void> CreatedPaths::ensure_directory(const std::filesystem::path& dir) {
@@ -111,8 +131,24 @@ Result<void> SingleFileSink::begin(const SliceRunInfo& run) {
 }
 
 Result<void> SingleFileSink::add_layer(const LayerResult& layer) {
+  return add_prepared_layer(layer, nullptr);
+}
+
+std::unique_ptr<PreparedLayer> SingleFileSink::prepare_layer(const LayerResult& layer) const {
+  if (!encodes_ahead() || !fits_grid(layer, needs_cells(), progress_.grid())) return nullptr;
+  return encode_ahead(layer, [&](LayerBytes& out) { return write_layer(out, layer); });
+}
+
+Result<void> SingleFileSink::add_prepared_layer(const LayerResult& layer,
+                                                std::unique_ptr<PreparedLayer> prepared) {
   if (auto ok = progress_.check_layer(layer, needs_cells(), kind_); !ok) return ok;
-  if (auto ok = write_layer(out_, layer); !ok) return ok;
+  if (const EncodedLayer* encoded = encoded_for(layer, prepared.get())) {
+    if (!encoded->encoded) return encoded->encoded;
+    out_.write(encoded->bytes);
+  } else {
+    LayerBytes out{out_};
+    if (auto ok = write_layer(out, layer); !ok) return ok;
+  }
   progress_.layer_done();
   return {};
 }
@@ -155,11 +191,28 @@ Result<void> LayerFilesSink::begin(const SliceRunInfo& run) {
 }
 
 Result<void> LayerFilesSink::add_layer(const LayerResult& layer) {
+  return add_prepared_layer(layer, nullptr);
+}
+
+std::unique_ptr<PreparedLayer> LayerFilesSink::prepare_layer(const LayerResult& layer) const {
+  if (!fits_grid(layer, needs_cells(), progress_.grid())) return nullptr;
+  return encode_ahead(layer, [&](LayerBytes& out) { return write_layer(out, layer); });
+}
+
+Result<void> LayerFilesSink::add_prepared_layer(const LayerResult& layer,
+                                                std::unique_ptr<PreparedLayer> prepared) {
   if (auto ok = progress_.check_layer(layer, needs_cells(), kind_); !ok) return ok;
-  const auto path = folder_ / layer_file_name(stem_, layer.layer, extension_);
+  const EncodedLayer* encoded = encoded_for(layer, prepared.get());
+  if (encoded != nullptr && !encoded->encoded) return encoded->encoded;
+  const auto path = layer_path(layer.layer);
   auto out = OutputFile::create(path);
   if (!out) return out.error();
-  if (auto ok = write_layer(*out, layer); !ok) return ok;  // ~OutputFile removes the temporary
+  if (encoded != nullptr) {
+    out->write(encoded->bytes);
+  } else {
+    LayerBytes bytes{*out};
+    if (auto ok = write_layer(bytes, layer); !ok) return ok;  // ~OutputFile removes the temporary
+  }
   if (auto ok = out->commit(); !ok) return ok;
   created_.add_file(path);
   progress_.layer_done();

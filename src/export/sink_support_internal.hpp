@@ -8,7 +8,9 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "io/little_endian.hpp"
@@ -17,6 +19,12 @@
 #include "strata/pipeline/layer_sink.hpp"
 
 namespace strata::io::detail {
+
+/// `<stem>_<index, 5 digits at least>.<extension>`: the name of a layer file.
+inline std::string layer_file_name(const std::string& stem, std::uint32_t k,
+                                   const char* extension) {
+  return fmt::format("{}_{:05}.{}", stem, k, extension);
+}
 
 /// The folders and finished files a sink created, so that abort() can remove them again.
 class CreatedPaths {
@@ -61,6 +69,33 @@ class SinkProgress {
   State state_ = State::Idle;
 };
 
+/// Where a writer puts a layer's bytes: straight into the file, or into memory when the layer is
+/// encoded ahead on a worker thread (LayerSink::prepare_layer).
+class LayerBytes {
+ public:
+  explicit LayerBytes(OutputFile& file) : file_(&file) {}
+  explicit LayerBytes(std::string& memory) : memory_(&memory) {}
+  void write(std::string_view bytes) {
+    if (file_ != nullptr) {
+      file_->write(bytes);
+    } else {
+      memory_->append(bytes);
+    }
+  }
+
+ private:
+  OutputFile* file_ = nullptr;
+  std::string* memory_ = nullptr;
+};
+
+/// A layer's bytes, encoded ahead by a writer's prepare_layer.
+struct EncodedLayer final : PreparedLayer {
+  EncodedLayer(std::uint32_t k, Result<void> status) : layer(k), encoded(std::move(status)) {}
+  std::uint32_t layer;
+  Result<void> encoded;  ///< the writer's error, reported when the layer's turn comes
+  std::string bytes;
+};
+
 /// Base of the sinks that write one file: begin() opens it under a temporary name and writes the
 /// header, add_layer() appends, finish() writes the trailer and renames the file into place.
 class SingleFileSink : public LayerSink {
@@ -73,13 +108,20 @@ class SingleFileSink : public LayerSink {
 
   Result<void> begin(const SliceRunInfo& run) final;
   Result<void> add_layer(const LayerResult& layer) final;
+  std::unique_ptr<PreparedLayer> prepare_layer(const LayerResult& layer) const final;
+  Result<void> add_prepared_layer(const LayerResult& layer,
+                                  std::unique_ptr<PreparedLayer> prepared) final;
   Result<void> finish() final;
   void abort() noexcept final;
   bool needs_cells() const override = 0;
 
  protected:
   virtual Result<void> write_header(OutputFile& out) = 0;
-  virtual Result<void> write_layer(OutputFile& out, const LayerResult& layer) = 0;
+  /// Writes one layer's bytes; const, reading only run(), since it may run on a worker thread.
+  virtual Result<void> write_layer(LayerBytes& out, const LayerResult& layer) const = 0;
+  /// Whether a layer's bytes may be held in memory to be encoded ahead; a writer whose layers
+  /// can be far larger than their cells says no and streams them.
+  virtual bool encodes_ahead() const { return true; }
   virtual Result<void> write_trailer(OutputFile& out) { return {}; }
   const SliceRunInfo& run() const { return progress_.run(); }
 
@@ -103,14 +145,22 @@ class LayerFilesSink : public LayerSink {
 
   Result<void> begin(const SliceRunInfo& run) final;
   Result<void> add_layer(const LayerResult& layer) final;
+  std::unique_ptr<PreparedLayer> prepare_layer(const LayerResult& layer) const final;
+  Result<void> add_prepared_layer(const LayerResult& layer,
+                                  std::unique_ptr<PreparedLayer> prepared) final;
   Result<void> finish() final;
   void abort() noexcept final;
   bool needs_cells() const override = 0;
 
  protected:
-  virtual Result<void> write_layer(OutputFile& out, const LayerResult& layer) = 0;
+  /// Writes one layer's file; const, reading only run(), since it may run on a worker thread.
+  virtual Result<void> write_layer(LayerBytes& out, const LayerResult& layer) const = 0;
   const SliceRunInfo& run() const { return progress_.run(); }
   const std::string& stem() const { return stem_; }
+  /// The file of layer k.
+  std::filesystem::path layer_path(std::uint32_t k) const {
+    return folder_ / layer_file_name(stem_, k, extension_);
+  }
 
  private:
   /// Removes `<stem>_<index>.<extension>` files with index >= nz left by an earlier run.
@@ -127,12 +177,6 @@ class LayerFilesSink : public LayerSink {
 /// Appends a double in the shortest form that reads back to the same bits.
 inline void append_number(std::string& out, double v) {
   fmt::format_to(std::back_inserter(out), "{}", v);
-}
-
-/// `<stem>_<index, 5 digits at least>.<extension>`: the name of a layer file.
-inline std::string layer_file_name(const std::string& stem, std::uint32_t k,
-                                   const char* extension) {
-  return fmt::format("{}_{:05}.{}", stem, k, extension);
 }
 
 }  // namespace strata::io::detail

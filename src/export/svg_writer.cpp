@@ -71,7 +71,7 @@ class SvgWriter final : public detail::LayerFilesSink {
   bool needs_cells() const override { return false; }
 
  protected:
-  Result<void> write_layer(OutputFile& out, const LayerResult& layer) override {
+  Result<void> write_layer(detail::LayerBytes& out, const LayerResult& layer) const override {
     const GridSpec& g = run().grid;
     const double width = g.nx * g.dx;
     const double height = g.ny * g.dy;

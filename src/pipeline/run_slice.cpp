@@ -68,6 +68,24 @@ void add_loop_diagnostics(SliceSummary& summary) {
   }
 }
 
+/// A layer ready to be written: its cells, their counts, and what each sink prepared of it.
+struct ClassifiedLayer {
+  std::vector<CellClass> cells;
+  std::uint64_t interior = 0;
+  std::uint64_t boundary = 0;
+  std::vector<std::unique_ptr<PreparedLayer>> prepared;  ///< by sink
+};
+
+void count_classes(ClassifiedLayer& layer) {
+  std::uint64_t interior = 0, boundary = 0;
+  for (const CellClass c : layer.cells) {
+    interior += c == CellClass::Interior ? 1 : 0;
+    boundary += c == CellClass::Boundary ? 1 : 0;
+  }
+  layer.interior = interior;
+  layer.boundary = boundary;
+}
+
 Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
                                 const SliceOptions& options, LayerKernel& kernel,
                                 std::span<LayerSink* const> sinks,
@@ -130,14 +148,14 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
     return it == solids.end() ? nullptr : it->second.data();
   };
 
-  // Writes layers [from, to), classified in `classes`, in order.
-  const auto write_layers =
-      [&](std::uint32_t from, std::uint32_t to,
-          const std::vector<std::vector<CellClass>>& classes) -> Result<void> {
+  // Writes layers [from, to), classified and prepared in `layers`, in order.
+  const auto write_layers = [&](std::uint32_t from, std::uint32_t to,
+                                std::vector<ClassifiedLayer>& layers) -> Result<void> {
     for (std::uint32_t k = from; k < to; ++k) {
       auto node = pending.extract(k);
       LayerGeometry& g = node.mapped();
-      const std::vector<CellClass>& cells = classes[k - from];
+      ClassifiedLayer& done = layers[k - from];
+      const std::vector<CellClass>& cells = done.cells;
       LayerStats& stats = summary.layers[k - first];
       stats.layer = k;
       stats.z_mm = grid.zk(k);
@@ -161,10 +179,8 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
       summary.misnested_layers += stats.misnested ? 1 : 0;
       summary.outline_layers += stats.outline ? 1 : 0;
       stats.contour_area_mm2 = g.contours.area_mm2;
-      for (const CellClass c : cells) {
-        if (c == CellClass::Interior) ++stats.interior;
-        if (c == CellClass::Boundary) ++stats.boundary;
-      }
+      stats.interior = done.interior;
+      stats.boundary = done.boundary;
       summary.class_counts[1] += stats.interior;
       summary.class_counts[2] += stats.boundary;
       summary.segments += g.segments;
@@ -172,12 +188,13 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
       summary.exact_fallbacks += g.fill.exact_fallbacks;
       summary.contour_volume_mm3 += stats.contour_area_mm2 * grid.dz;
       const LayerResult result{k, grid.zk(k), cells, g.contours, g.fill.hatches};
-      for (LayerSink* sink : sinks) {
-        if (auto ok = sink->add_layer(result); !ok) {
+      for (std::size_t s = 0; s < sinks.size(); ++s) {
+        if (auto ok = sinks[s]->add_prepared_layer(result, std::move(done.prepared[s])); !ok) {
           abort_all(sinks);
           return ok;
         }
       }
+      done = {};
       if (progress) progress(k + 1 - first, span->count());
     }
     return {};
@@ -189,13 +206,15 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
     return computed;
   };
 
-  // A pipeline of rounds: while this thread writes the layers classified in the round before
-  // (the writers — encoding, the view's data — are serial), the pool classifies the layers whose
-  // shell window is now complete and computes the next batch.
+  // A pipeline of rounds: while this thread hands the sinks the layers of the round before (in
+  // order, so serial), the pool classifies the layers whose shell window is now complete, has
+  // the sinks prepare them (encoding, compression: LayerSink::prepare_layer), and computes the
+  // next batch.
   std::uint32_t next_write = first;      // the first layer not yet written
   std::uint32_t classified_end = first;  // layers [next_write, classified_end) are in `ready`
-  std::vector<std::vector<CellClass>> ready;
-  std::vector<std::vector<CellClass>> classifying;
+  std::vector<ClassifiedLayer> ready;
+  std::vector<ClassifiedLayer> classifying;
+  std::vector<const LayerGeometry*> classifying_geometry;
   std::vector<LayerGeometry> computed;
   if (lo < hi) computed = compute_batch(lo, std::min(hi, lo + batch));
   for (std::uint32_t k0 = lo; k0 < hi; k0 += batch) {
@@ -212,14 +231,28 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
         k1 == hi ? end : std::min(end, k1 > reach ? k1 - reach : std::uint32_t{0});
     const std::uint32_t class_from = classified_end;
     const std::uint32_t class_to = std::max(classified_end, window_end);
-    classifying.assign(class_to - class_from, {});
+    classifying.clear();
+    classifying.resize(class_to - class_from);
+    // The nodes of `pending` stay where they are while this thread extracts the layers before.
+    classifying_geometry.clear();
+    for (std::uint32_t k = class_from; k < class_to; ++k) {
+      classifying_geometry.push_back(&pending.at(k));
+    }
     tbb::task_group round;
     round.run([&, k1, class_from, class_to] {
-      if (classify) {
-        tbb::parallel_for(class_from, class_to, [&](std::uint32_t k) {
-          shell->classify(k, lookup, classifying[k - class_from]);
-        });
-      }
+      tbb::parallel_for(class_from, class_to, [&](std::uint32_t k) {
+        ClassifiedLayer& done = classifying[k - class_from];
+        if (classify) {
+          shell->classify(k, lookup, done.cells);
+          count_classes(done);
+        }
+        const LayerGeometry& g = *classifying_geometry[k - class_from];
+        const LayerResult result{k, grid.zk(k), done.cells, g.contours, g.fill.hatches};
+        done.prepared.resize(sinks.size());
+        for (std::size_t s = 0; s < sinks.size(); ++s) {
+          done.prepared[s] = sinks[s]->prepare_layer(result);
+        }
+      });
       if (k1 < hi) computed = compute_batch(k1, std::min(hi, k1 + batch));
     });
     // On an early return (a writer failed) the round is cancelled and waited for: it refers to

@@ -54,30 +54,45 @@ Result<void> ViewStackCollector::begin(const SliceRunInfo& run) {
   return {};
 }
 
-Result<void> ViewStackCollector::add_layer(const LayerResult& layer) {
+namespace {
+
+/// What the page keeps of one layer, made ahead on a worker thread.
+struct ViewLayer final : PreparedLayer {
+  std::uint32_t layer = 0;
+  std::string cells_zlib;
+  std::vector<std::uint8_t> blocks;  ///< the layer's largest code in each block, v.ny * v.nx
+  std::vector<ViewLoop> loops;
+  std::vector<float> hatches;
+};
+
+}  // namespace
+
+std::unique_ptr<PreparedLayer> ViewStackCollector::prepare_layer(const LayerResult& layer) const {
   const GridSpec& g = stack_.grid;
-  stack_.stored.push_back(layer.layer);
+  const ViewVolume& v = stack_.volume;
+  auto out = std::make_unique<ViewLayer>();
+  out->layer = layer.layer;
   std::string packed;
   io::append_packed_cells(layer.cells, packed);
-  stack_.cells_zlib.push_back(detail::zlib_compress(packed));
+  out->cells_zlib = detail::zlib_compress(packed);
 
-  ViewVolume& v = stack_.volume;
-  std::uint8_t* plane = v.blocks.data() + std::size_t{layer.layer / v.bz} * v.ny * v.nx;
-  for (std::uint32_t j = 0; j < g.ny; ++j) {
-    std::uint8_t* row = plane + std::size_t{j / v.by} * v.nx;
-    const CellClass* cells = layer.cells.data() + std::size_t{j} * g.nx;
-    // Block by block: the largest code of the block's cells of this row.
-    for (std::uint32_t i0 = 0, b = 0; i0 < g.nx; i0 += v.bx, ++b) {
-      const std::uint32_t i1 = std::min(g.nx, i0 + v.bx);
-      std::uint8_t block = row[b];
-      for (std::uint32_t i = i0; i < i1; ++i) {
-        block = std::max(block, static_cast<std::uint8_t>(cells[i]));
+  out->blocks.assign(std::size_t{v.ny} * v.nx, 0);
+  if (layer.cells.size() == g.cells_per_layer()) {
+    for (std::uint32_t j = 0; j < g.ny; ++j) {
+      std::uint8_t* row = out->blocks.data() + std::size_t{j / v.by} * v.nx;
+      const CellClass* cells = layer.cells.data() + std::size_t{j} * g.nx;
+      // Block by block: the largest code of the block's cells of this row.
+      for (std::uint32_t i0 = 0, b = 0; i0 < g.nx; i0 += v.bx, ++b) {
+        const std::uint32_t i1 = std::min(g.nx, i0 + v.bx);
+        std::uint8_t block = row[b];
+        for (std::uint32_t i = i0; i < i1; ++i) {
+          block = std::max(block, static_cast<std::uint8_t>(cells[i]));
+        }
+        row[b] = block;
       }
-      row[b] = block;
     }
   }
 
-  std::vector<ViewLoop> loops;
   if (options_.contours) {
     for (const Contour& c : layer.contours.loops) {
       ViewLoop loop;
@@ -87,21 +102,44 @@ Result<void> ViewStackCollector::add_layer(const LayerResult& layer) {
         loop.xy.push_back(static_cast<float>(p.x));
         loop.xy.push_back(static_cast<float>(p.y));
       }
-      loops.push_back(std::move(loop));
+      out->loops.push_back(std::move(loop));
     }
   }
-  stack_.contours.push_back(std::move(loops));
 
-  std::vector<float> hatches;
   if (options_.hatches) {
-    hatches.reserve(4 * layer.hatches.size());
+    out->hatches.reserve(4 * layer.hatches.size());
     for (const HatchSegment& h : layer.hatches) {
       const auto y = static_cast<float>(g.yc(h.row));
-      hatches.insert(hatches.end(),
-                     {static_cast<float>(h.x_start), y, static_cast<float>(h.x_end), y});
+      out->hatches.insert(out->hatches.end(),
+                          {static_cast<float>(h.x_start), y, static_cast<float>(h.x_end), y});
     }
   }
-  stack_.hatches.push_back(std::move(hatches));
+  return out;
+}
+
+Result<void> ViewStackCollector::add_layer(const LayerResult& layer) {
+  return add_prepared_layer(layer, prepare_layer(layer));
+}
+
+Result<void> ViewStackCollector::add_prepared_layer(const LayerResult& layer,
+                                                    std::unique_ptr<PreparedLayer> prepared) {
+  auto* made = dynamic_cast<ViewLayer*>(prepared.get());
+  if (made == nullptr || made->layer != layer.layer) return add_layer(layer);
+  ViewVolume& v = stack_.volume;
+  if (layer.layer >= stack_.grid.nz) {
+    return Error{ErrorCode::Internal,
+                 fmt::format("view stack: layer {} is beyond the grid's {} layers", layer.layer,
+                             stack_.grid.nz),
+                 {}};
+  }
+  stack_.stored.push_back(layer.layer);
+  stack_.cells_zlib.push_back(std::move(made->cells_zlib));
+  std::uint8_t* plane = v.blocks.data() + std::size_t{layer.layer / v.bz} * v.ny * v.nx;
+  for (std::size_t b = 0; b < made->blocks.size(); ++b) {
+    plane[b] = std::max(plane[b], made->blocks[b]);
+  }
+  stack_.contours.push_back(std::move(made->loops));
+  stack_.hatches.push_back(std::move(made->hatches));
   return {};
 }
 

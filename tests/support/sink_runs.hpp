@@ -12,6 +12,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -92,6 +93,26 @@ inline Result<void> run_sink(LayerSink& sink, const SliceRunInfo& run,
   if (auto ok = sink.begin(run); !ok) return ok;
   for (const auto& layer : layers) {
     if (auto ok = sink.add_layer(layer.result()); !ok) return ok;
+  }
+  return sink.finish();
+}
+
+/// run_sink the way the engine runs a sink: every layer is prepared first, on another thread and
+/// last layer first, then added in order with what was prepared of it.
+inline Result<void> run_sink_prepared(LayerSink& sink, const SliceRunInfo& run,
+                                      const std::vector<LayerData>& layers) {
+  if (auto ok = sink.begin(run); !ok) return ok;
+  std::vector<std::unique_ptr<PreparedLayer>> prepared(layers.size());
+  std::thread worker([&] {
+    for (std::size_t i = layers.size(); i-- > 0;) {
+      prepared[i] = sink.prepare_layer(layers[i].result());
+    }
+  });
+  worker.join();
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    if (auto ok = sink.add_prepared_layer(layers[i].result(), std::move(prepared[i])); !ok) {
+      return ok;
+    }
   }
   return sink.finish();
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -38,6 +39,13 @@ struct LayerResult {
   const std::vector<HatchSegment>& hatches;
 };
 
+/// What a sink makes of one layer ahead of add_prepared_layer (LayerSink::prepare_layer): its
+/// encoded bytes, say. Each sink defines its own.
+class PreparedLayer {
+ public:
+  virtual ~PreparedLayer() = default;
+};
+
 /// A consumer of finished layers: a file writer, a statistics collector. Layers stream through,
 /// so a sink must not keep references past add_layer. If any step fails, abort() is called on
 /// every sink and must leave no partial file behind.
@@ -48,6 +56,19 @@ class LayerSink {
   virtual Result<void> begin(const SliceRunInfo& run) = 0;
   /// Called for every layer, k = 0 .. nz-1 in order; an error stops the run.
   virtual Result<void> add_layer(const LayerResult& layer) = 0;
+  /// The part of add_layer's work that needs only the layer and what begin() set up (encoding,
+  /// compression), so that the engine can do it on its worker threads while the layers before
+  /// are written. Called after begin(), on any thread, in any order, at most once a layer; it
+  /// must not change the sink. The default prepares nothing.
+  virtual std::unique_ptr<PreparedLayer> prepare_layer(const LayerResult& /*layer*/) const {
+    return nullptr;
+  }
+  /// add_layer for a layer prepare_layer was called on, with what it returned; same order and
+  /// errors as add_layer. The default ignores `prepared`.
+  virtual Result<void> add_prepared_layer(const LayerResult& layer,
+                                          std::unique_ptr<PreparedLayer> /*prepared*/) {
+    return add_layer(layer);
+  }
   /// Called once after the last layer: complete the output (rename it into place).
   virtual Result<void> finish() = 0;
   /// Called instead of finish() when the run fails anywhere: remove what was written.

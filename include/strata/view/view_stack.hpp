@@ -58,6 +58,10 @@ class ViewStackCollector final : public LayerSink {
 
   Result<void> begin(const SliceRunInfo& run) override;
   Result<void> add_layer(const LayerResult& layer) override;
+  /// Packs, compresses and reduces the layer; add_prepared_layer only appends it.
+  std::unique_ptr<PreparedLayer> prepare_layer(const LayerResult& layer) const override;
+  Result<void> add_prepared_layer(const LayerResult& layer,
+                                  std::unique_ptr<PreparedLayer> prepared) override;
   Result<void> finish() override;
   void abort() noexcept override;
 

@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -202,6 +203,81 @@ TEST(RunSlice, LayersAreWrittenInOrderWhileLaterBatchesAreComputed) {
     for (std::uint32_t k = 0; k < s.grid.nz; ++k) all[k] = k;
     EXPECT_EQ(sink.order, all) << "batch " << batch;
     EXPECT_TRUE(sink.finished);
+  }
+}
+
+/// Prepares every layer ahead (a copy of its cells, tagged with its index) and checks, as each
+/// layer is added, that what arrives with it is what was prepared of that layer.
+class PreparingSink final : public LayerSink {
+ public:
+  struct Copy final : PreparedLayer {
+    std::uint32_t layer = 0;
+    std::vector<CellClass> cells;
+  };
+
+  Result<void> begin(const SliceRunInfo& run) override {
+    prepared_ = std::vector<std::atomic<int>>(run.grid.nz);
+    return {};
+  }
+  std::unique_ptr<PreparedLayer> prepare_layer(const LayerResult& layer) const override {
+    ++prepared_[layer.layer];
+    auto copy = std::make_unique<Copy>();
+    copy->layer = layer.layer;
+    copy->cells = layer.cells;
+    return copy;
+  }
+  Result<void> add_layer(const LayerResult& layer) override {
+    added_without.push_back(layer.layer);
+    return {};
+  }
+  Result<void> add_prepared_layer(const LayerResult& layer,
+                                  std::unique_ptr<PreparedLayer> prepared) override {
+    const auto* copy = dynamic_cast<const Copy*>(prepared.get());
+    if (copy == nullptr || copy->layer != layer.layer || copy->cells != layer.cells) {
+      mismatched.push_back(layer.layer);
+    }
+    order.push_back(layer.layer);
+    return {};
+  }
+  Result<void> finish() override { return {}; }
+  void abort() noexcept override {}
+
+  /// How often each layer was prepared.
+  std::vector<int> times_prepared() const {
+    std::vector<int> times;
+    for (const auto& n : prepared_) times.push_back(n.load());
+    return times;
+  }
+
+  std::vector<std::uint32_t> order, mismatched, added_without;
+
+ private:
+  mutable std::vector<std::atomic<int>> prepared_;
+};
+
+TEST(RunSlice, EveryLayerSentIsPreparedOnceAndArrivesWithWhatWasPreparedOfIt) {
+  const BoxRun s;
+  for (const int batch : {1, 3, 4, 100}) {
+    for (const bool ranged : {false, true}) {
+      SliceOptions options = s.options;
+      options.batch_layers = batch;
+      options.shell_mm = 2.0;  // the layers around a range are sliced for the shell, not sent
+      if (ranged) options.layers = LayerRange{3, 8};
+      PreparingSink sink;
+      LayerSink* sinks[] = {&sink};
+      ASSERT_TRUE(slice_model(s.mesh, s.grid, options, sinks).has_value());
+      const LayerSpan span = ranged ? LayerSpan{3, 8} : LayerSpan{0, s.grid.nz};
+      std::vector<std::uint32_t> sent;
+      std::vector<int> times(s.grid.nz, 0);
+      for (std::uint32_t k = span.first; k < span.end; ++k) {
+        sent.push_back(k);
+        times[k] = 1;
+      }
+      EXPECT_EQ(sink.order, sent) << "batch " << batch;
+      EXPECT_EQ(sink.times_prepared(), times) << "batch " << batch;
+      EXPECT_TRUE(sink.mismatched.empty()) << "batch " << batch;
+      EXPECT_TRUE(sink.added_without.empty()) << "batch " << batch;
+    }
   }
 }
 

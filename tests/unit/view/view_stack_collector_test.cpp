@@ -3,6 +3,7 @@
 
 #include "strata/view/view_stack.hpp"
 #include "support/page_encodings.hpp"
+#include "support/sink_runs.hpp"
 
 namespace strata::view {
 namespace {
@@ -77,6 +78,35 @@ TEST(ViewStackCollector, VolumeBlocksHoldTheHighestClassOfTheirCells) {
   EXPECT_EQ(v.nz, 2u);
   ASSERT_EQ(v.blocks.size(), 8u);
   for (std::uint8_t b : v.blocks) EXPECT_EQ(b, 3) << "every block touches the boundary rim";
+}
+
+TEST(ViewStackCollector, KeepsTheSameWhetherLayersArePreparedAheadOrNot) {
+  // The engine prepares layers on its threads, in any order; what is kept must not change, the
+  // blocks shared by both layers included (max_blocks 1: one block holds every cell).
+  auto layers = io::testing::small_layers();
+  layers[1].contours.loops.push_back(io::testing::loop({{0, 0}, {1, 0}, {0, 1}}, LoopKind::Hole));
+  layers[1].hatches = {{0, -1.25, 0.75}, {2, -1.25, -1.0}};
+  for (std::uint32_t max_blocks : {1u, 2u, 200u}) {
+    ViewStackCollector as_they_come(ViewStackOptions{.max_blocks = max_blocks});
+    ViewStackCollector prepared(ViewStackOptions{.max_blocks = max_blocks});
+    ASSERT_TRUE(io::testing::run_sink(as_they_come, io::testing::small_run(), layers));
+    ASSERT_TRUE(io::testing::run_sink_prepared(prepared, io::testing::small_run(), layers));
+    const ViewStack a = as_they_come.take();
+    const ViewStack b = prepared.take();
+    EXPECT_EQ(b.stored, a.stored);
+    EXPECT_EQ(b.cells_zlib, a.cells_zlib);
+    ASSERT_EQ(b.contours.size(), a.contours.size());
+    for (std::size_t s = 0; s < a.contours.size(); ++s) {
+      ASSERT_EQ(b.contours[s].size(), a.contours[s].size());
+      for (std::size_t l = 0; l < a.contours[s].size(); ++l) {
+        EXPECT_EQ(b.contours[s][l].kind, a.contours[s][l].kind);
+        EXPECT_EQ(b.contours[s][l].xy, a.contours[s][l].xy);
+      }
+    }
+    EXPECT_EQ(b.hatches, a.hatches);
+    EXPECT_EQ(b.volume.blocks, a.volume.blocks);
+    EXPECT_EQ(a.volume.blocks.size(), max_blocks == 1 ? 1u : max_blocks == 2 ? 8u : 30u);
+  }
 }
 
 TEST(ViewStackCollector, KeepsTheScanlinesAsSegmentsAtTheRowCentres) {
