@@ -1,6 +1,9 @@
 #include "strata/diagnose/diagnose_mesh.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
@@ -369,24 +372,33 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
   // ---- facets: degenerate, area, duplicates
   std::vector<bool> degenerate(nf, false);
   {
+    // The predicate runs in parallel; the area is summed in facet order, one result.
+    std::vector<std::uint8_t> flat(nf, 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nf, 4096), [&](const auto& range) {
+      for (std::size_t f = range.begin(); f < range.end(); ++f) {
+        const auto& t = mesh.triangles[f];
+        flat[f] =
+            t[0] == t[1] || t[1] == t[2] || t[2] == t[0] ||
+            detail::is_collinear(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+      }
+    });
     FirstOccurrences<FacetIndex> found{limit};
     double area = 0.0;
     for (std::size_t f = 0; f < nf; ++f) {
       const auto& t = mesh.triangles[f];
-      const Vec3& a = mesh.vertices[t[0]];
-      const Vec3& b = mesh.vertices[t[1]];
-      const Vec3& c = mesh.vertices[t[2]];
-      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || detail::is_collinear(a, b, c)) {
+      if (flat[f] != 0) {
         degenerate[f] = true;
         found.add(f, static_cast<FacetIndex>(f));
       } else {
-        area += triangle_area(a, b, c);
+        area += triangle_area(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
       }
     }
     report.degenerate_facets = found.finish();
     report.surface_area_mm2 = area;
   }
-  {
+  // The checks below read the mesh and write fields of the report of their own: they run side
+  // by side.
+  const auto find_duplicates = [&] {
     // Among facets with area: zero-area facets are reported as degenerate only.
     std::vector<std::pair<std::array<VertexIndex, 3>, FacetIndex>> keyed;
     keyed.reserve(nf);
@@ -402,183 +414,198 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
       if (keyed[s].first == keyed[s - 1].first) found.add(keyed[s].second, keyed[s].second);
     }
     report.duplicate_facets = found.finish();
-  }
-
-  // ---- edges and shells
-  // The reported topology is that of the facets with area: a zero-area facet bounds nothing, and
-  // repair tools drop it first. The balance that decides whether the winding number is defined
-  // takes every facet, since zero-area facets can seal cracks (T-junctions) for the slicer.
-  const std::vector<EdgeUse> uses = collect_edge_uses(mesh, degenerate);
-  UnionFind facet_sets(nf);
-  for (std::size_t s = 1; s < uses.size(); ++s) {
-    if (uses[s].lo == uses[s - 1].lo && uses[s].hi == uses[s - 1].hi) {
-      facet_sets.unite(uses[s].facet, uses[s - 1].facet);
-    }
-  }
-  constexpr std::uint32_t kNone = 0xFFFFFFFFU;
-  std::vector<std::uint32_t> shell_of_facet(nf, kNone);
-  std::vector<std::uint32_t> shell_of_root(nf, kNone);
-  std::vector<ShellReport> shells;
-  for (std::size_t f = 0; f < nf; ++f) {
-    if (degenerate[f]) continue;
-    const std::uint32_t root = facet_sets.find(static_cast<std::uint32_t>(f));
-    if (shell_of_root[root] == kNone) {
-      shell_of_root[root] = static_cast<std::uint32_t>(shells.size());
-      ShellReport shell;
-      shell.first_facet = static_cast<FacetIndex>(f);
-      shell.is_closed = true;
-      shell.is_balanced = true;
-      shells.push_back(shell);
-    }
-    shell_of_facet[f] = shell_of_root[root];
-    ++shells[shell_of_facet[f]].num_facets;
-  }
-  const auto edge_groups = [](const std::vector<EdgeUse>& all, auto&& visit) {
-    for (std::size_t begin = 0; begin < all.size();) {
-      std::size_t end = begin + 1;
-      while (end < all.size() && all[end].lo == all[begin].lo && all[end].hi == all[begin].hi) {
-        ++end;
-      }
-      std::size_t forward = 0;
-      for (std::size_t s = begin; s < end; ++s) forward += all[s].forward ? 1 : 0;
-      visit(all[begin], end - begin, forward);
-      begin = end;
-    }
   };
-  const auto& v = mesh.vertices;
-  const auto as_run = [&v](const EdgeUse& use) {
-    return use.forward ? EdgeLocation{v[use.lo], v[use.hi]} : EdgeLocation{v[use.hi], v[use.lo]};
-  };
-  {
-    FirstOccurrences<EdgeLocation> unbalanced{limit};
-    edge_groups(collect_edge_uses(mesh, std::vector<bool>(nf, false)),
-                [&](const EdgeUse& first, std::size_t n, std::size_t forward) {
-                  if (2 * forward != n) unbalanced.add(first.facet, as_run(first));
-                });
-    report.unbalanced_edges = unbalanced.finish();
-  }
-  {
-    FirstOccurrences<EdgeLocation> boundary{limit}, non_manifold{limit}, inconsistent{limit};
-    std::vector<std::pair<VertexIndex, VertexIndex>> boundary_pairs;
-    edge_groups(uses, [&](const EdgeUse& first, std::size_t n, std::size_t forward) {
-      // `first` is the use by the lowest facet.
-      ShellReport& shell = shells[shell_of_facet[first.facet]];
-      if (n == 1) {
-        boundary.add(first.facet, as_run(first));
-        boundary_pairs.emplace_back(first.lo, first.hi);
-      }
-      if (n > 2) non_manifold.add(first.facet, {v[first.lo], v[first.hi]});
-      if (n == 2 && forward != 1) inconsistent.add(first.facet, as_run(first));
-      if (2 * forward != n) shell.is_balanced = false;
-      if (n % 2 == 1) shell.is_closed = false;
-    });
-    report.boundary_edges = boundary.finish();
-    report.non_manifold_edges = non_manifold.finish();
-    report.inconsistent_edges = inconsistent.finish();
 
-    // Boundary loops: connected components of the graph of boundary edges.
-    std::vector<VertexIndex> ends;
-    ends.reserve(2 * boundary_pairs.size());
-    for (const auto& [a, b] : boundary_pairs) {
-      ends.push_back(a);
-      ends.push_back(b);
+  const auto find_edges_and_shells = [&] {
+    // ---- edges and shells
+    // The reported topology is that of the facets with area: a zero-area facet bounds nothing, and
+    // repair tools drop it first. The balance that decides whether the winding number is defined
+    // takes every facet, since zero-area facets can seal cracks (T-junctions) for the slicer.
+    const std::vector<EdgeUse> uses = collect_edge_uses(mesh, degenerate);
+    UnionFind facet_sets(nf);
+    for (std::size_t s = 1; s < uses.size(); ++s) {
+      if (uses[s].lo == uses[s - 1].lo && uses[s].hi == uses[s - 1].hi) {
+        facet_sets.unite(uses[s].facet, uses[s - 1].facet);
+      }
     }
-    std::sort(ends.begin(), ends.end());
-    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
-    const auto local = [&](VertexIndex x) {
-      return static_cast<std::uint32_t>(std::lower_bound(ends.begin(), ends.end(), x) -
-                                        ends.begin());
+    constexpr std::uint32_t kNone = 0xFFFFFFFFU;
+    std::vector<std::uint32_t> shell_of_facet(nf, kNone);
+    std::vector<std::uint32_t> shell_of_root(nf, kNone);
+    std::vector<ShellReport> shells;
+    for (std::size_t f = 0; f < nf; ++f) {
+      if (degenerate[f]) continue;
+      const std::uint32_t root = facet_sets.find(static_cast<std::uint32_t>(f));
+      if (shell_of_root[root] == kNone) {
+        shell_of_root[root] = static_cast<std::uint32_t>(shells.size());
+        ShellReport shell;
+        shell.first_facet = static_cast<FacetIndex>(f);
+        shell.is_closed = true;
+        shell.is_balanced = true;
+        shells.push_back(shell);
+      }
+      shell_of_facet[f] = shell_of_root[root];
+      ++shells[shell_of_facet[f]].num_facets;
+    }
+    const auto edge_groups = [](const std::vector<EdgeUse>& all, auto&& visit) {
+      for (std::size_t begin = 0; begin < all.size();) {
+        std::size_t end = begin + 1;
+        while (end < all.size() && all[end].lo == all[begin].lo && all[end].hi == all[begin].hi) {
+          ++end;
+        }
+        std::size_t forward = 0;
+        for (std::size_t s = begin; s < end; ++s) forward += all[s].forward ? 1 : 0;
+        visit(all[begin], end - begin, forward);
+        begin = end;
+      }
     };
-    UnionFind loops(ends.size());
-    for (const auto& [a, b] : boundary_pairs) loops.unite(local(a), local(b));
-    std::size_t num_loops = 0;
-    for (std::uint32_t k = 0; k < ends.size(); ++k) num_loops += loops.find(k) == k ? 1 : 0;
-    report.num_boundary_loops = num_loops;
-  }
+    const auto& v = mesh.vertices;
+    const auto as_run = [&v](const EdgeUse& use) {
+      return use.forward ? EdgeLocation{v[use.lo], v[use.hi]} : EdgeLocation{v[use.hi], v[use.lo]};
+    };
+    {
+      FirstOccurrences<EdgeLocation> unbalanced{limit};
+      const auto visit = [&](const EdgeUse& first, std::size_t n, std::size_t forward) {
+        if (2 * forward != n) unbalanced.add(first.facet, as_run(first));
+      };
+      // Without degenerate facets every facet's uses are those already collected.
+      if (report.degenerate_facets.empty()) {
+        edge_groups(uses, visit);
+      } else {
+        edge_groups(collect_edge_uses(mesh, std::vector<bool>(nf, false)), visit);
+      }
+      report.unbalanced_edges = unbalanced.finish();
+    }
+    {
+      FirstOccurrences<EdgeLocation> boundary{limit}, non_manifold{limit}, inconsistent{limit};
+      std::vector<std::pair<VertexIndex, VertexIndex>> boundary_pairs;
+      edge_groups(uses, [&](const EdgeUse& first, std::size_t n, std::size_t forward) {
+        // `first` is the use by the lowest facet.
+        ShellReport& shell = shells[shell_of_facet[first.facet]];
+        if (n == 1) {
+          boundary.add(first.facet, as_run(first));
+          boundary_pairs.emplace_back(first.lo, first.hi);
+        }
+        if (n > 2) non_manifold.add(first.facet, {v[first.lo], v[first.hi]});
+        if (n == 2 && forward != 1) inconsistent.add(first.facet, as_run(first));
+        if (2 * forward != n) shell.is_balanced = false;
+        if (n % 2 == 1) shell.is_closed = false;
+      });
+      report.boundary_edges = boundary.finish();
+      report.non_manifold_edges = non_manifold.finish();
+      report.inconsistent_edges = inconsistent.finish();
 
-  // ---- volumes and shell judgement
-  {
-    // Zero-area facets add exactly zero volume; they are summed in an extra group.
-    std::vector<std::uint32_t> group_of_facet = shell_of_facet;
-    for (auto& g : group_of_facet) g = g == kNone ? static_cast<std::uint32_t>(shells.size()) : g;
-    const detail::ExactVolumes volumes =
-        detail::exact_signed_volumes(mesh, group_of_facet, shells.size() + 1);
-    report.volume_mm3 = volumes.total_mm3;
-    std::vector<Bbox3> shell_bounds(shells.size());
-    for (std::size_t f = 0; f < nf; ++f) {
-      if (shell_of_facet[f] == kNone) continue;
-      for (VertexIndex x : mesh.triangles[f]) shell_bounds[shell_of_facet[f]].add(mesh.vertices[x]);
+      // Boundary loops: connected components of the graph of boundary edges.
+      std::vector<VertexIndex> ends;
+      ends.reserve(2 * boundary_pairs.size());
+      for (const auto& [a, b] : boundary_pairs) {
+        ends.push_back(a);
+        ends.push_back(b);
+      }
+      std::sort(ends.begin(), ends.end());
+      ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+      const auto local = [&](VertexIndex x) {
+        return static_cast<std::uint32_t>(std::lower_bound(ends.begin(), ends.end(), x) -
+                                          ends.begin());
+      };
+      UnionFind loops(ends.size());
+      for (const auto& [a, b] : boundary_pairs) loops.unite(local(a), local(b));
+      std::size_t num_loops = 0;
+      for (std::uint32_t k = 0; k < ends.size(); ++k) num_loops += loops.find(k) == k ? 1 : 0;
+      report.num_boundary_loops = num_loops;
     }
-    std::vector<std::size_t> positive;
-    for (std::size_t s = 0; s < shells.size(); ++s) {
-      ShellReport& shell = shells[s];
-      shell.signed_volume_mm3 = volumes.by_group_mm3[s];
-      shell.is_balanced = shell.is_balanced && shell.is_closed;
-      if (shell.is_closed) ++report.num_closed_shells;
-      if (shell.is_balanced && shell.signed_volume_mm3 > 0.0) positive.push_back(s);
-    }
-    // A negative shell inside a positive one is the inner wall of a hollow part; the bounding
-    // boxes decide, and the comparisons are capped for meshes made of very many shells.
-    constexpr std::size_t kMaxContainmentTests = 50'000'000;
-    std::size_t tests = 0;
-    FirstOccurrences<std::size_t> inverted{limit};
-    for (std::size_t s = 0; s < shells.size(); ++s) {
-      ShellReport& shell = shells[s];
-      if (!shell.is_balanced || !(shell.signed_volume_mm3 < 0.0)) continue;
-      for (std::size_t p : positive) {
-        if (++tests > kMaxContainmentTests) break;
-        if (strictly_inside(shell_bounds[s], shell_bounds[p])) {
-          shell.is_cavity = true;
-          break;
+
+    // ---- volumes and shell judgement
+    {
+      // Zero-area facets add exactly zero volume; they are summed in an extra group.
+      std::vector<std::uint32_t> group_of_facet = shell_of_facet;
+      for (auto& g : group_of_facet) g = g == kNone ? static_cast<std::uint32_t>(shells.size()) : g;
+      const detail::ExactVolumes volumes =
+          detail::exact_signed_volumes(mesh, group_of_facet, shells.size() + 1);
+      report.volume_mm3 = volumes.total_mm3;
+      std::vector<Bbox3> shell_bounds(shells.size());
+      for (std::size_t f = 0; f < nf; ++f) {
+        if (shell_of_facet[f] == kNone) continue;
+        for (VertexIndex x : mesh.triangles[f])
+          shell_bounds[shell_of_facet[f]].add(mesh.vertices[x]);
+      }
+      std::vector<std::size_t> positive;
+      for (std::size_t s = 0; s < shells.size(); ++s) {
+        ShellReport& shell = shells[s];
+        shell.signed_volume_mm3 = volumes.by_group_mm3[s];
+        shell.is_balanced = shell.is_balanced && shell.is_closed;
+        if (shell.is_closed) ++report.num_closed_shells;
+        if (shell.is_balanced && shell.signed_volume_mm3 > 0.0) positive.push_back(s);
+      }
+      // A negative shell inside a positive one is the inner wall of a hollow part; the bounding
+      // boxes decide, and the comparisons are capped for meshes made of very many shells.
+      constexpr std::size_t kMaxContainmentTests = 50'000'000;
+      std::size_t tests = 0;
+      FirstOccurrences<std::size_t> inverted{limit};
+      for (std::size_t s = 0; s < shells.size(); ++s) {
+        ShellReport& shell = shells[s];
+        if (!shell.is_balanced || !(shell.signed_volume_mm3 < 0.0)) continue;
+        for (std::size_t p : positive) {
+          if (++tests > kMaxContainmentTests) break;
+          if (strictly_inside(shell_bounds[s], shell_bounds[p])) {
+            shell.is_cavity = true;
+            break;
+          }
+        }
+        if (!shell.is_cavity) {
+          shell.is_inverted = true;
+          inverted.add(s, s);
         }
       }
-      if (!shell.is_cavity) {
-        shell.is_inverted = true;
-        inverted.add(s, s);
+      report.inverted_shells = inverted.finish();
+    }
+    report.shells = std::move(shells);
+  };
+
+  const auto find_vertex_defects = [&] {
+    // ---- vertices
+    find_non_manifold_vertices(mesh, degenerate, limit, report);
+    if (!report.bounds.empty() && nv >= 2) {
+      const Vec3 lo = report.bounds.min, hi = report.bounds.max;
+      const double diagonal =
+          std::sqrt((hi.x - lo.x) * (hi.x - lo.x) + (hi.y - lo.y) * (hi.y - lo.y) +
+                    (hi.z - lo.z) * (hi.z - lo.z));
+      const double tolerance = options.near_vertex_mm.value_or(1e-6 * diagonal);
+      report.near_vertex_tolerance_mm = tolerance;
+      if (tolerance > 0.0 && std::isfinite(tolerance)) {
+        find_near_vertices(mesh, report.bounds, tolerance, options.max_near_vertex_checks, limit,
+                           report);
       }
     }
-    report.inverted_shells = inverted.finish();
-  }
-  report.shells = std::move(shells);
+  };
 
-  // ---- vertices
-  find_non_manifold_vertices(mesh, degenerate, limit, report);
-  if (!report.bounds.empty() && nv >= 2) {
-    const Vec3 lo = report.bounds.min, hi = report.bounds.max;
-    const double diagonal =
-        std::sqrt((hi.x - lo.x) * (hi.x - lo.x) + (hi.y - lo.y) * (hi.y - lo.y) +
-                  (hi.z - lo.z) * (hi.z - lo.z));
-    const double tolerance = options.near_vertex_mm.value_or(1e-6 * diagonal);
-    report.near_vertex_tolerance_mm = tolerance;
-    if (tolerance > 0.0 && std::isfinite(tolerance)) {
-      find_near_vertices(mesh, report.bounds, tolerance, options.max_near_vertex_checks, limit,
-                         report);
-    }
-  }
-
-  // ---- stored normals
-  if (!soup.stored_normals.empty() && soup.stored_normals.size() == nf) {
-    report.normals_checked = true;
-    FirstOccurrences<FacetIndex> flipped{limit}, zero{limit}, non_finite{limit};
-    for (std::size_t f = 0; f < nf; ++f) {
-      const Vec3& n = soup.stored_normals[f];
-      const auto id = static_cast<FacetIndex>(f);
-      if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) {
-        non_finite.add(f, id);
-      } else if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) {
-        zero.add(f, id);
-      } else if (!degenerate[f]) {
-        const auto& t = mesh.triangles[f];
-        if (detail::normal_agreement_sign(n, mesh.vertices[t[0]], mesh.vertices[t[1]],
-                                          mesh.vertices[t[2]]) < 0) {
-          flipped.add(f, id);
+  const auto check_stored_normals = [&] {
+    // ---- stored normals
+    if (!soup.stored_normals.empty() && soup.stored_normals.size() == nf) {
+      report.normals_checked = true;
+      FirstOccurrences<FacetIndex> flipped{limit}, zero{limit}, non_finite{limit};
+      for (std::size_t f = 0; f < nf; ++f) {
+        const Vec3& n = soup.stored_normals[f];
+        const auto id = static_cast<FacetIndex>(f);
+        if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) {
+          non_finite.add(f, id);
+        } else if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) {
+          zero.add(f, id);
+        } else if (!degenerate[f]) {
+          const auto& t = mesh.triangles[f];
+          if (detail::normal_agreement_sign(n, mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                            mesh.vertices[t[2]]) < 0) {
+            flipped.add(f, id);
+          }
         }
       }
+      report.flipped_normals = flipped.finish();
+      report.zero_normals = zero.finish();
+      report.non_finite_normals = non_finite.finish();
     }
-    report.flipped_normals = flipped.finish();
-    report.zero_normals = zero.finish();
-    report.non_finite_normals = non_finite.finish();
-  }
+  };
+
+  tbb::parallel_invoke(find_duplicates, find_edges_and_shells, find_vertex_defects,
+                       check_stored_normals);
 
   // ---- self-intersections
   if (options.check_self_intersections) {

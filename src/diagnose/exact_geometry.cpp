@@ -3,6 +3,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <gmpxx.h>
 #include <mpfr.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <bit>
@@ -110,32 +112,49 @@ ExactVolumes exact_signed_volumes(const IndexedMesh& mesh,
   if (min_exponent == INT_MAX) return result;  // every coordinate is zero
 
   std::vector<mpz_class> coord(3 * nv);
-  for (std::size_t i = 0; i < 3 * nv; ++i) {
-    const Dyadic& d = dyadic[i];
-    if (d.mantissa == 0) continue;
-    coord[i] = static_cast<long>(d.mantissa);
-    mpz_mul_2exp(coord[i].get_mpz_t(), coord[i].get_mpz_t(),
-                 static_cast<mp_bitcnt_t>(d.exponent - min_exponent));
-  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, 3 * nv, 4096), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i < range.end(); ++i) {
+      const Dyadic& d = dyadic[i];
+      if (d.mantissa == 0) continue;
+      coord[i] = static_cast<long>(d.mantissa);
+      mpz_mul_2exp(coord[i].get_mpz_t(), coord[i].get_mpz_t(),
+                   static_cast<mp_bitcnt_t>(d.exponent - min_exponent));
+    }
+  });
 
-  std::vector<mpz_class> sums(num_groups);
-  mpz_class minor, det;
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const auto& t = mesh.triangles[f];
-    const mpz_class* a = &coord[3 * static_cast<std::size_t>(t[0])];
-    const mpz_class* b = &coord[3 * static_cast<std::size_t>(t[1])];
-    const mpz_class* c = &coord[3 * static_cast<std::size_t>(t[2])];
-    // det = a · (b x c)
-    mpz_mul(minor.get_mpz_t(), b[1].get_mpz_t(), c[2].get_mpz_t());
-    mpz_submul(minor.get_mpz_t(), b[2].get_mpz_t(), c[1].get_mpz_t());
-    mpz_mul(det.get_mpz_t(), a[0].get_mpz_t(), minor.get_mpz_t());
-    mpz_mul(minor.get_mpz_t(), b[2].get_mpz_t(), c[0].get_mpz_t());
-    mpz_submul(minor.get_mpz_t(), b[0].get_mpz_t(), c[2].get_mpz_t());
-    mpz_addmul(det.get_mpz_t(), a[1].get_mpz_t(), minor.get_mpz_t());
-    mpz_mul(minor.get_mpz_t(), b[0].get_mpz_t(), c[1].get_mpz_t());
-    mpz_submul(minor.get_mpz_t(), b[1].get_mpz_t(), c[0].get_mpz_t());
-    mpz_addmul(det.get_mpz_t(), a[2].get_mpz_t(), minor.get_mpz_t());
-    sums[group_of_facet[f]] += det;
+  // The facets are cut into parts summed on their own; integer sums do not depend on the
+  // order. A part holds a sum for every group, so many groups (a soup of loose facets) make
+  // one part.
+  const std::size_t nf = mesh.triangles.size();
+  constexpr std::size_t kMaxParts = 8;
+  constexpr std::size_t kMinFacetsAPart = 16384;
+  const std::size_t parts =
+      num_groups > 64 ? 1 : std::clamp<std::size_t>(nf / kMinFacetsAPart, 1, kMaxParts);
+  std::vector<std::vector<mpz_class>> part_sums(parts, std::vector<mpz_class>(num_groups));
+  tbb::parallel_for(std::size_t{0}, parts, [&](std::size_t part) {
+    std::vector<mpz_class>& sums = part_sums[part];
+    mpz_class minor, det;
+    for (std::size_t f = nf * part / parts; f < nf * (part + 1) / parts; ++f) {
+      const auto& t = mesh.triangles[f];
+      const mpz_class* a = &coord[3 * static_cast<std::size_t>(t[0])];
+      const mpz_class* b = &coord[3 * static_cast<std::size_t>(t[1])];
+      const mpz_class* c = &coord[3 * static_cast<std::size_t>(t[2])];
+      // det = a · (b x c)
+      mpz_mul(minor.get_mpz_t(), b[1].get_mpz_t(), c[2].get_mpz_t());
+      mpz_submul(minor.get_mpz_t(), b[2].get_mpz_t(), c[1].get_mpz_t());
+      mpz_mul(det.get_mpz_t(), a[0].get_mpz_t(), minor.get_mpz_t());
+      mpz_mul(minor.get_mpz_t(), b[2].get_mpz_t(), c[0].get_mpz_t());
+      mpz_submul(minor.get_mpz_t(), b[0].get_mpz_t(), c[2].get_mpz_t());
+      mpz_addmul(det.get_mpz_t(), a[1].get_mpz_t(), minor.get_mpz_t());
+      mpz_mul(minor.get_mpz_t(), b[0].get_mpz_t(), c[1].get_mpz_t());
+      mpz_submul(minor.get_mpz_t(), b[1].get_mpz_t(), c[0].get_mpz_t());
+      mpz_addmul(det.get_mpz_t(), a[2].get_mpz_t(), minor.get_mpz_t());
+      sums[group_of_facet[f]] += det;
+    }
+  });
+  std::vector<mpz_class>& sums = part_sums[0];
+  for (std::size_t part = 1; part < parts; ++part) {
+    for (std::size_t g = 0; g < num_groups; ++g) sums[g] += part_sums[part][g];
   }
   mpz_class total;
   const int scale = 3 * min_exponent;
