@@ -3,6 +3,7 @@
 // Pieces shared by the layer writers of src/export/: the paths a sink created (so abort() can take
 // them away), the order checks every sink makes, little-endian encoding, number formatting.
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <cstdint>
@@ -176,7 +177,11 @@ class LayerFilesSink : public LayerSink {
 
 /// Appends a double in the shortest form that reads back to the same bits.
 inline void append_number(std::string& out, double v) {
-  fmt::format_to(std::back_inserter(out), "{}", v);
+  // The format compiled and written to the stack: the same text as fmt::format("{}", v), with
+  // neither the format string parsed nor the string grown a character at a time.
+  char digits[32];  // the longest, "-2.2250738585072014e-308", takes 24
+  char* end = fmt::format_to(digits, FMT_COMPILE("{}"), v);
+  out.append(digits, end);
 }
 
 }  // namespace strata::io::detail

@@ -1,0 +1,66 @@
+// The writers' numbers: the shortest text that reads back to the same double, exactly as
+// fmt::format("{}") writes it (SPEC's number grammar), however the text is produced.
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "export/sink_support_internal.hpp"
+
+namespace strata::io::detail {
+namespace {
+
+std::string appended(double v) {
+  std::string out = "x";  // appends, never replaces
+  append_number(out, v);
+  return out.substr(1);
+}
+
+TEST(AppendNumber, WritesWhatFmtWritesForTheEdgesOfEveryForm) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<double> edges = {0.0,
+                                     -0.0,
+                                     1.0,
+                                     -1.5,
+                                     0.1,
+                                     1e-4,
+                                     1e-5,
+                                     9.999999999999999e15,
+                                     1e16,
+                                     123456789012345680.0,
+                                     std::numeric_limits<double>::min(),
+                                     std::numeric_limits<double>::denorm_min(),
+                                     -std::numeric_limits<double>::max(),
+                                     -2.2250738585072014e-308,
+                                     inf,
+                                     -inf,
+                                     std::numeric_limits<double>::quiet_NaN()};
+  for (const double v : edges) EXPECT_EQ(appended(v), fmt::format("{}", v)) << v;
+  EXPECT_EQ(appended(1e16), "1e+16");
+  EXPECT_EQ(appended(1e-5), "1e-05");
+  EXPECT_EQ(appended(-0.0), "-0");
+  EXPECT_EQ(appended(-2.2250738585072014e-308), "-2.2250738585072014e-308");
+}
+
+TEST(AppendNumber, WritesWhatFmtWritesForRandomDoublesOfEveryMagnitude) {
+  std::mt19937_64 random(20261125);
+  std::uniform_real_distribution<double> millimetres(-500.0, 500.0);
+  for (int i = 0; i < 200000; ++i) {
+    const auto bits = random();
+    const double any = std::bit_cast<double>(bits);  // every exponent, NaNs and infinities too
+    const double coordinate = millimetres(random);
+    const double rounded = static_cast<double>(static_cast<std::int64_t>(coordinate * 1000)) / 1000;
+    for (const double v : {any, coordinate, rounded}) {
+      ASSERT_EQ(appended(v), fmt::format("{}", v)) << std::bit_cast<std::uint64_t>(v);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace strata::io::detail
