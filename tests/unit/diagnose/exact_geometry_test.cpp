@@ -75,5 +75,25 @@ TEST(ExactSignedVolumes, RoundsOnceToNearest) {
   EXPECT_EQ(v.total_mm3, 1.0 / 6.0);
 }
 
+TEST(ExactSignedVolumes, SumsManyFacetsInPartsAsExactlyAsInOne) {
+  // 3,000 unit cubes far from the origin (36,000 facets, enough to be summed in parts): each
+  // cube's tetrahedra are of order 1e45 and cancel to 1 only when summed exactly, and a part's
+  // sum cuts through cubes. Two groups are summed in parts, one group a cube in one part.
+  IndexedMesh mesh;
+  for (int i = 0; i < 3000; ++i) test::append_mesh(mesh, cube_at(1e15 + 4.0 * i, -1e15, 3e15, 1));
+  const std::size_t nf = mesh.triangles.size();
+  std::vector<std::uint32_t> two_groups(nf), cube_groups(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    two_groups[f] = static_cast<std::uint32_t>(f / 12 % 2);
+    cube_groups[f] = static_cast<std::uint32_t>(f / 12);
+  }
+  const ExactVolumes halves = exact_signed_volumes(mesh, two_groups, 2);
+  EXPECT_EQ(halves.by_group_mm3, (std::vector<double>{1500.0, 1500.0}));
+  EXPECT_EQ(halves.total_mm3, 3000.0);
+  const ExactVolumes cubes = exact_signed_volumes(mesh, cube_groups, 3000);
+  EXPECT_EQ(cubes.by_group_mm3, std::vector<double>(3000, 1.0));
+  EXPECT_EQ(cubes.total_mm3, 3000.0);
+}
+
 }  // namespace
 }  // namespace strata::diagnose::detail
