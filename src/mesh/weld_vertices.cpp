@@ -4,7 +4,8 @@
 #include <bit>
 #include <cstdint>
 #include <limits>
-#include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "strata/core/error.hpp"
 
@@ -39,6 +40,58 @@ struct PointKeyHash {
   }
 };
 
+/// The vertices seen so far, found by their key: open addressing with linear probing over a
+/// power-of-two table of (hash, vertex + 1) pairs, kept at most half full. Flat and allocated
+/// once (and on the rare doubling), where a node-based map allocates a node a vertex.
+class VertexTable {
+ public:
+  explicit VertexTable(std::size_t expected) {
+    std::size_t capacity = 16;
+    while (capacity < 2 * expected) capacity *= 2;
+    slots_.assign(capacity, Slot{});
+  }
+
+  /// The vertex at `key`, or `next` (then inserted) when there is none.
+  /// @return (vertex, whether it was inserted)
+  std::pair<VertexIndex, bool> find_or_insert(const PointKey& key,
+                                              const std::vector<Vec3>& vertices, VertexIndex next) {
+    const std::size_t hash = PointKeyHash{}(key);
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
+      Slot& slot = slots_[i];
+      if (slot.vertex_plus_one == 0) {
+        slot = Slot{hash, next + 1};
+        if (2 * ++size_ > slots_.size()) grow();
+        return {next, true};
+      }
+      if (slot.hash == hash && key_of(vertices[slot.vertex_plus_one - 1]) == key) {
+        return {slot.vertex_plus_one - 1, false};
+      }
+    }
+  }
+
+ private:
+  struct Slot {
+    std::size_t hash = 0;
+    VertexIndex vertex_plus_one = 0;  ///< 0: empty
+  };
+
+  void grow() {
+    std::vector<Slot> old(slots_.size() * 2);
+    old.swap(slots_);
+    const std::size_t mask = slots_.size() - 1;
+    for (const Slot& slot : old) {
+      if (slot.vertex_plus_one == 0) continue;
+      std::size_t i = slot.hash & mask;
+      while (slots_[i].vertex_plus_one != 0) i = (i + 1) & mask;
+      slots_[i] = slot;
+    }
+  }
+
+  std::vector<Slot> slots_;
+  std::size_t size_ = 0;
+};
+
 }  // namespace
 
 IndexedMesh weld_vertices(const TriangleSoup& soup) {
@@ -46,20 +99,19 @@ IndexedMesh weld_vertices(const TriangleSoup& soup) {
   mesh.triangles.reserve(soup.triangles.size());
   // A closed triangle mesh has about half as many vertices as triangles.
   mesh.vertices.reserve(soup.triangles.size() / 2 + 3);
-  std::unordered_map<PointKey, VertexIndex, PointKeyHash> index_of;
-  index_of.reserve(soup.triangles.size() / 2 + 3);
+  VertexTable index_of(soup.triangles.size() / 2 + 3);
 
   for (const auto& triangle : soup.triangles) {
     std::array<VertexIndex, 3> corners{};
     for (int c = 0; c < 3; ++c) {
-      const auto [it, inserted] =
-          index_of.try_emplace(key_of(triangle[c]), static_cast<VertexIndex>(mesh.vertices.size()));
+      const auto [vertex, inserted] = index_of.find_or_insert(
+          key_of(triangle[c]), mesh.vertices, static_cast<VertexIndex>(mesh.vertices.size()));
       if (inserted) {
         STRATA_ASSERT(mesh.vertices.size() < std::numeric_limits<VertexIndex>::max(),
                       "more distinct vertices than VertexIndex can number");
         mesh.vertices.push_back(triangle[c]);
       }
-      corners[c] = it->second;
+      corners[c] = vertex;
     }
     mesh.triangles.push_back(corners);
   }

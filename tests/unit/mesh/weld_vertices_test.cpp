@@ -107,5 +107,28 @@ TEST(WeldVertices, EveryCornerKeepsItsCoordinatesOnAGrid) {
   EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end());
 }
 
+TEST(WeldVertices, ASoupOfLooseFacetsWeldsWhatRepeatsAfterEveryCornerWasNew) {
+  // 20,000 loose facets have six times the vertices a closed mesh of as many facets has: the
+  // table grows several times, and each facet repeated afterwards still finds its corners, with
+  // the vertices numbered in order of first appearance.
+  const int n = 20000;
+  TriangleSoup soup;
+  for (int i = 0; i < n; ++i) {
+    const double x = i * 0.25;
+    soup.triangles.push_back({Vec3{x, 0, 0}, {x, 1, 0}, {x, 0, -1.0 - i}});
+  }
+  for (int i = n - 1; i >= 0; i -= 7) soup.triangles.push_back(soup.triangles[i]);
+  const auto mesh = weld_vertices(soup);
+  ASSERT_EQ(mesh.vertices.size(), 3u * n);
+  for (int i = 0; i < n; ++i) {
+    const auto first = static_cast<VertexIndex>(3 * i);
+    ASSERT_EQ(mesh.triangles[i], (std::array<VertexIndex, 3>{first, first + 1, first + 2}));
+  }
+  for (std::size_t f = n; f < mesh.triangles.size(); ++f) {
+    const std::size_t original = n - 1 - 7 * (f - n);
+    ASSERT_EQ(mesh.triangles[f], mesh.triangles[original]) << f;
+  }
+}
+
 }  // namespace
 }  // namespace strata
