@@ -68,6 +68,13 @@ TEST(ViewPageData, EscapesTheEndOfAScriptElement) {
   EXPECT_EQ(data->find("</"), std::string::npos) << *data;
   EXPECT_NE(data->find(R"("title":"a<\/script><b")"), std::string::npos) << *data;
   EXPECT_EQ(json::parse(*data).at("title"), "a</script><b");
+  // Several, side by side, first and last: each "</" becomes "<\/".
+  page.title = "</</a<</";
+  const Result<std::string> many = view_page_data(page);
+  ASSERT_TRUE(many.has_value());
+  EXPECT_EQ(many->find("</"), std::string::npos) << *many;
+  EXPECT_NE(many->find(R"("title":"<\/<\/a<<\/")"), std::string::npos) << *many;
+  EXPECT_EQ(json::parse(*many).at("title"), "</</a<</");
 }
 
 TEST(ViewPageData, ReplacesInvalidUtf8InANameInsteadOfRefusingIt) {
