@@ -212,6 +212,13 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   if (view_collector != nullptr && options->threads != 1) {
     display_ahead = std::async(std::launch::async, make_display);
   }
+  // The report's fingerprint hashes the model file (50 MB for a million facets): with more than
+  // one thread, beside the slicing too.
+  std::future<Result<std::string>> fingerprint_ahead;
+  if (formats->count("json") && options->threads != 1) {
+    fingerprint_ahead =
+        std::async(std::launch::async, [&] { return run_fingerprint(o, m, *options); });
+  }
 
   diagnose::DiagnoseOptions diagnose_options;
   diagnose_options.check_self_intersections = view_collector != nullptr && o.page.full_check;
@@ -263,7 +270,8 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   report["plan"] = nlohmann::json::parse(plan_json(out.plan));
   if (formats->count("json")) {
     // What `strata merge` needs to join ranges: which layers, of which run, in which outputs.
-    auto fingerprint = run_fingerprint(o, m, *options);
+    auto fingerprint =
+        fingerprint_ahead.valid() ? fingerprint_ahead.get() : run_fingerprint(o, m, *options);
     if (!fingerprint) return fail(fingerprint.error());
     report["range"] = {{"first", span->first}, {"end", span->end}, {"nz_total", grid->nz}};
     report["fingerprint"] = *fingerprint;
