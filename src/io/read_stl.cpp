@@ -1,8 +1,11 @@
 // STL reading: binary and ASCII, told apart by content (SPEC §2, STYLE §4).
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -66,41 +69,71 @@ Result<TriangleSoup> read_stl_binary(std::string_view bytes, std::string_view na
 
   TriangleSoup soup;
   soup.format = "stl-binary";
-  soup.triangles.reserve(count);
-  soup.stored_normals.reserve(count);
   DiagnosticTally tally("facet");
-
-  const char* record = bytes.data() + kStlBinaryHeaderBytes;
-  for (std::uint32_t f = 0; f < count; ++f, record += kStlBinaryFacetBytes) {
+  const auto record_of = [&](std::uint32_t f) {
+    return bytes.data() + kStlBinaryHeaderBytes + std::size_t{f} * kStlBinaryFacetBytes;
+  };
+  const auto load = [&](std::uint32_t f) {
     std::array<float, 12> v{};
-    for (std::size_t k = 0; k < v.size(); ++k) v[k] = load_float32_le(record + 4 * k);
+    for (std::size_t k = 0; k < v.size(); ++k) v[k] = load_float32_le(record_of(f) + 4 * k);
+    return v;
+  };
+  const auto finite = [](const float* p) {
+    return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+  };
 
-    std::array<Vec3, 3> triangle;
-    for (int c = 0; c < 3; ++c) {
-      const float x = v[3 + 3 * c];
-      const float y = v[4 + 3 * c];
-      const float z = v[5 + 3 * c];
-      if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
-        return bad_input(facet_location(name, f),
-                         fmt::format("corner {} has a non-finite coordinate ({}, {}, {}); NaN and "
-                                     "infinity cannot be sliced",
-                                     c, x, y, z));
+  // The records are independent: they are converted in parallel, and what is wrong with them is
+  // reported afterwards in facet order, as a reading from the first record on would.
+  soup.triangles.resize(count);
+  soup.stored_normals.resize(count);
+  std::atomic<std::uint32_t> first_bad_corner{count};
+  std::atomic<bool> any_bad_normal{false};
+  tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, count, 16384), [&](const auto& range) {
+    std::uint32_t bad_corner = count;
+    bool bad_normal = false;
+    for (std::uint32_t f = range.begin(); f < range.end(); ++f) {
+      const std::array<float, 12> v = load(f);
+      std::array<Vec3, 3>& triangle = soup.triangles[f];
+      for (int c = 0; c < 3; ++c) {
+        const float* p = v.data() + 3 + 3 * c;
+        if (!finite(p)) bad_corner = std::min(bad_corner, f);
+        // float -> double is exact (SPEC §2).
+        triangle[c] = Vec3{p[0], p[1], p[2]};
       }
-      // float -> double is exact (SPEC §2).
-      triangle[c] = Vec3{x, y, z};
+      if (finite(v.data())) {
+        soup.stored_normals[f] = Vec3{v[0], v[1], v[2]};
+      } else {
+        bad_normal = true;  // the normal is ignored: it stays zero
+      }
     }
-    Vec3 normal{v[0], v[1], v[2]};
-    if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
+    for (std::uint32_t seen = first_bad_corner.load();
+         bad_corner < seen && !first_bad_corner.compare_exchange_weak(seen, bad_corner);) {
+    }
+    if (bad_normal) any_bad_normal = true;
+  });
+
+  if (const std::uint32_t f = first_bad_corner.load(); f < count) {
+    const std::array<float, 12> v = load(f);
+    for (int c = 0; c < 3; ++c) {
+      const float* p = v.data() + 3 + 3 * c;
+      if (finite(p)) continue;
+      return bad_input(facet_location(name, f),
+                       fmt::format("corner {} has a non-finite coordinate ({}, {}, {}); NaN and "
+                                   "infinity cannot be sliced",
+                                   c, p[0], p[1], p[2]));
+    }
+  }
+  if (any_bad_normal) {
+    for (std::uint32_t f = 0; f < count; ++f) {
+      const std::array<float, 12> v = load(f);
+      if (finite(v.data())) continue;
       tally.add("stl.bad_normal", Severity::Warning, f, [&] {
         return fmt::format(
             "{}: stored normal ({}, {}, {}) is not finite; the normal is ignored, "
             "the facet kept",
             facet_location(name, f), v[0], v[1], v[2]);
       });
-      normal = Vec3{};
     }
-    soup.triangles.push_back(triangle);
-    soup.stored_normals.push_back(normal);
   }
 
   if (layout.fit == StlBinaryFit::TrailingBytes) {

@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gtest/gtest.h>
 
 #include <array>
@@ -307,6 +308,57 @@ TEST(ReadStlBinary, NanNormalIsIgnoredAndTheFacetKept) {
   const Diagnostic* warning = find_diagnostic(*soup, "stl.bad_normal");
   ASSERT_NE(warning, nullptr);
   EXPECT_TRUE(contains(warning->message, "t.stl: facet 1")) << warning->message;
+}
+
+/// `n` facets along x, facet f's corners offset by f: every one distinct.
+std::vector<Facet> many_facets(int n) {
+  std::vector<Facet> facets;
+  for (int f = 0; f < n; ++f) {
+    const auto x = static_cast<float>(f);
+    facets.push_back(Facet{{0, 0, 1}, {{{x, 0, 0}, {x + 1, 0, 0}, {x, 1, 0}}}});
+  }
+  return facets;
+}
+
+TEST(ReadStlBinary, ManyFacetsReadInPartsKeepTheirOrderAndReportTheFirstBadCorner) {
+  // 50,000 facets are converted in parts: the soup is in file order, and of two bad corners far
+  // apart the error names the first facet, whichever part is done first.
+  auto facets = many_facets(50000);
+  const auto soup = read_stl_bytes(binary_stl(facets), "t.stl");
+  ASSERT_TRUE(soup) << soup.error().to_string();
+  ASSERT_EQ(soup->triangles.size(), 50000u);
+  for (int f = 0; f < 50000; f += 997) {
+    EXPECT_EQ(soup->triangles[f][1], (Vec3{f + 1.0, 0, 0}));
+    EXPECT_EQ(soup->stored_normals[f], (Vec3{0, 0, 1}));
+  }
+  facets[41000].corners[2][1] = std::numeric_limits<float>::quiet_NaN();
+  facets[20500].corners[1][0] = std::numeric_limits<float>::infinity();
+  const auto bad = read_stl_bytes(binary_stl(facets), "t.stl");
+  ASSERT_FALSE(bad);
+  EXPECT_EQ(bad.error().location, "t.stl: facet 20500");
+  EXPECT_TRUE(contains(bad.error().message, "corner 1 has a non-finite coordinate (inf, 0, 0)"))
+      << bad.error().message;
+}
+
+TEST(ReadStlBinary, BadNormalsOfManyFacetsAreReportedInFileOrder) {
+  auto facets = many_facets(50000);
+  for (const int f : {45000, 7, 30000}) {
+    facets[f].normal = {0, std::numeric_limits<float>::infinity(), 0};
+  }
+  const auto soup = read_stl_bytes(binary_stl(facets), "t.stl");
+  ASSERT_TRUE(soup) << soup.error().to_string();
+  EXPECT_EQ(soup->stored_normals[30000], Vec3{});
+  EXPECT_EQ(soup->stored_normals[30001], (Vec3{0, 0, 1}));
+  std::vector<std::string> messages;
+  for (const Diagnostic& d : soup->diagnostics) {
+    if (d.code == "stl.bad_normal") messages.push_back(d.message);
+  }
+  ASSERT_FALSE(messages.empty());
+  const std::string all = fmt::format("{}", fmt::join(messages, "\n"));
+  const auto at = [&](const char* facet) { return all.find(facet); };
+  ASSERT_NE(at("facet 7:"), std::string::npos) << all;
+  ASSERT_NE(at("facet 30000"), std::string::npos) << all;
+  EXPECT_LT(at("facet 7:"), at("facet 30000")) << all;
 }
 
 TEST(ReadStlBinary, CountAboveTheLimitFails) {
