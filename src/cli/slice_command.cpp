@@ -1,6 +1,7 @@
 #include "cli/slice_command.hpp"
 
 #include <fmt/format.h>
+#include <tbb/global_control.h>
 #include <unistd.h>
 
 #include <cctype>
@@ -103,6 +104,13 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   const auto started = Clock::now();
   auto options = to_slice_options(o.slice);
   if (!options) return options.error();
+  // --threads holds for the whole run: reading, diagnosing and the page's model too, not only
+  // the slicing (which sets the same limit).
+  std::optional<tbb::global_control> thread_limit;
+  if (options->threads > 0) {
+    thread_limit.emplace(tbb::global_control::max_allowed_parallelism,
+                         static_cast<std::size_t>(options->threads));
+  }
   if (!o.layers.empty()) {
     auto range = parse_layer_range(o.layers);
     if (!range) return Error{ErrorCode::Usage, "--layers: " + range.error().message, {}};
