@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
@@ -31,6 +32,55 @@ const char* loop_kind_name(LoopKind kind) {
 template <class T>
 std::string b64(const std::vector<T>& values) {
   return detail::base64(detail::as_bytes(values));
+}
+
+/// Stands for the layers in the page's JSON until their text replaces it; control characters
+/// make it a string no name or note can be.
+constexpr const char* kLayersMarker = "\x01strata-layers\x01";
+
+/// The page's "layers" object as compact JSON, keys in the order the JSON library writes them
+/// (sorted). Base64 and the loop kinds need no escaping.
+std::string layers_text(const ViewStack& s) {
+  const std::size_t n = s.stored.size();
+  std::vector<std::string> cells(n), contours(n), hatches(n);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
+    cells[k] = '"' + detail::base64(s.cells_zlib[k]) + '"';
+    std::string& loops = contours[k];
+    loops = "[";
+    for (const ViewLoop& loop : s.contours[k]) {
+      if (loops.size() > 1) loops += ',';
+      loops += R"({"kind":")";
+      loops += loop_kind_name(loop.kind);
+      loops += R"(","points":")";
+      loops += b64(loop.xy);
+      loops += "\"}";
+    }
+    loops += ']';
+    if (s.has_hatches) hatches[k] = '"' + b64(s.hatches[k]) + '"';
+  });
+  const auto array = [&](const std::vector<std::string>& items) {
+    std::size_t size = 2 + n;
+    for (const std::string& item : items) size += item.size();
+    std::string out;
+    out.reserve(size);
+    out += '[';
+    for (std::size_t k = 0; k < n; ++k) {
+      if (k > 0) out += ',';
+      out += items[k];
+    }
+    out += ']';
+    return out;
+  };
+  std::string out = R"({"cells":)";
+  out += array(cells);
+  out += R"(,"contours":)";
+  out += array(contours);
+  out += R"(,"encoding":"2bit-msb-zlib","hatches":)";
+  out += s.has_hatches ? array(hatches) : std::string("null");
+  out += R"(,"stored":)";
+  out += json(s.stored).dump();
+  out += fmt::format(R"(,"stride":{}}})", s.stride);
+  return out;
 }
 
 void push_segment(std::vector<float>& out, const Vec3& a, const Vec3& b) {
@@ -182,28 +232,13 @@ Result<std::string> view_page_data(const ViewPage& page) {
   data["check"] = nullptr;
   if (page.check) data["check"] = check_json(*page.check, page.model_mesh);
 
-  const ViewStack& s = page.stack;
-  json cells = json::array();
-  json contours = json::array();
-  json hatches = s.has_hatches ? json::array() : json(nullptr);
-  for (std::size_t n = 0; n < s.stored.size(); ++n) {
-    cells.push_back(detail::base64(s.cells_zlib[n]));
-    json loops = json::array();
-    for (const ViewLoop& loop : s.contours[n]) {
-      loops.push_back({{"kind", loop_kind_name(loop.kind)}, {"points", b64(loop.xy)}});
-    }
-    contours.push_back(std::move(loops));
-    if (s.has_hatches) hatches.push_back(b64(s.hatches[n]));
-  }
-  data["layers"] = {{"encoding", "2bit-msb-zlib"},
-                    {"stored", s.stored},
-                    {"stride", s.stride},
-                    {"cells", std::move(cells)},
-                    {"contours", std::move(contours)},
-                    {"hatches", std::move(hatches)}};
+  // The layers are most of the page (tens of MB of base64): their text is written directly, in
+  // parallel, where a JSON value's serialisation would look at every character again. A marker
+  // string holds their place in the document; the text is what the JSON library would write.
+  data["layers"] = kLayersMarker;
   // No volume when no layer was collected (a model checked, not sliced yet).
   data["volume"] = nullptr;
-  if (const ViewVolume& v = s.volume; !v.blocks.empty()) {
+  if (const ViewVolume& v = page.stack.volume; !v.blocks.empty()) {
     const std::string_view volume_bytes(reinterpret_cast<const char*>(v.blocks.data()),
                                         v.blocks.size());
     data["volume"] = {{"nx", v.nx},
@@ -226,6 +261,12 @@ Result<std::string> view_page_data(const ViewPage& page) {
 
   // Invalid UTF-8 in a name (a path of the model) is replaced rather than refused.
   std::string text = data.dump(-1, ' ', false, json::error_handler_t::replace);
+  // With its key: a name holding the marker's text is written with its quotes escaped.
+  const std::string key = R"("layers":)";
+  const std::string marker = key + json(kLayersMarker).dump();
+  const std::size_t marker_at = text.find(marker);
+  STRATA_ASSERT(marker_at != std::string::npos, "the layers' marker is in the page data");
+  text.replace(marker_at + key.size(), marker.size() - key.size(), layers_text(page.stack));
   // A script element ends at "</": the JSON string "<\/" reads the same. Copied in pieces
   // between the few places that need it (tens of MB of layers have none).
   std::size_t at = text.find("</");

@@ -60,6 +60,54 @@ TEST(ViewPageData, WritesTheHeaderOfAnEmptyPage) {
       "stride": 1, "cells": [], "contours": [], "hatches": null})"));
 }
 
+TEST(ViewPageData, WritesTheLayersAsTheJsonLibraryWouldCharacterForCharacter) {
+  // The layers' text is written directly, not through the JSON library: it must be what the
+  // library writes for the same values, with and without scanline segments.
+  for (const bool with_hatches : {true, false}) {
+    ViewPage page;
+    page.title = "\x01strata-layers\x01";  // the layers' marker in a name stays the name
+    page.source_path = R"("layers":"\u0001strata-layers\u0001")";
+    ViewStack& s = page.stack;
+    s.stored = {0, 3, 6};
+    s.stride = 3;
+    s.has_hatches = with_hatches;
+    s.cells_zlib = {std::string("\x78\x9c\x03\x00", 4), "ab", std::string(100, '\xff')};
+    s.contours = {
+        {},
+        {ViewLoop{LoopKind::Outer, {0, 0, 1, 0, 1, 1}},
+         ViewLoop{LoopKind::Hole, {0.25f, 0.25f, 0.5f, 0.25f}}, ViewLoop{LoopKind::Open, {}}},
+        {ViewLoop{LoopKind::Open, {-1.5f, 2e-7f}}}};
+    s.hatches = {{0.5f, 0.125f, 2.0f, 0.125f}, {}, {1, 2, 3, 4, 5, 6, 7, 8}};
+    json expected_contours = json::array();
+    for (const auto& loops : s.contours) {
+      json layer = json::array();
+      for (const ViewLoop& loop : loops) {
+        const char* kind = loop.kind == LoopKind::Outer  ? "outer"
+                           : loop.kind == LoopKind::Hole ? "hole"
+                                                         : "open";
+        layer.push_back({{"kind", kind}, {"points", detail::base64(detail::as_bytes(loop.xy))}});
+      }
+      expected_contours.push_back(layer);
+    }
+    json expected_hatches = json::array();
+    for (const auto& h : s.hatches) expected_hatches.push_back(detail::base64(detail::as_bytes(h)));
+    json expected_cells = json::array();
+    for (const auto& c : s.cells_zlib) expected_cells.push_back(detail::base64(c));
+    const json expected = {{"encoding", "2bit-msb-zlib"},
+                           {"stored", s.stored},
+                           {"stride", s.stride},
+                           {"cells", expected_cells},
+                           {"contours", expected_contours},
+                           {"hatches", with_hatches ? expected_hatches : json(nullptr)}};
+    const Result<std::string> data = view_page_data(page);
+    ASSERT_TRUE(data.has_value());
+    EXPECT_NE(data->find(R"("layers":)" + expected.dump() + ","), std::string::npos) << *data;
+    EXPECT_EQ(json::parse(*data).at("layers"), expected);
+    EXPECT_EQ(json::parse(*data).at("title"), page.title);
+    EXPECT_EQ(json::parse(*data).at("source").at("path"), page.source_path);
+  }
+}
+
 TEST(ViewPageData, EscapesTheEndOfAScriptElement) {
   ViewPage page;
   page.title = "a</script><b";
