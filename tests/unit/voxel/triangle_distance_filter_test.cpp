@@ -111,6 +111,46 @@ TEST(TriangleDistanceFilter, AgreesAtMetreScaleCoordinates) {
   }
 }
 
+TEST(TriangleDistanceFilter, DecidesPointsBesideACornerWithoutTheExactTest) {
+  // Beside a corner the facet's nearest point is the corner itself, farther than the line of
+  // either edge: points just beyond t of the corner must still be rejected by the double
+  // bounds, since the shell meets them around every vertex of a fine mesh.
+  std::mt19937_64 rng(20261125);
+  std::uniform_real_distribution<double> coord(-5.0, 5.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto unit_vector = [](const Vec3& v) {
+    const double len = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    return Vec3{v.x / len, v.y / len, v.z / len};
+  };
+  int rejected = 0;
+  const int n = 4000;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 a{coord(rng), coord(rng), coord(rng)};
+    const Vec3 b{coord(rng), coord(rng), coord(rng)};
+    const Vec3 c{coord(rng), coord(rng), coord(rng)};
+    // Away from both edges at a (the corner's region), tilted out of the plane at random.
+    const Vec3 ub = unit_vector({b.x - a.x, b.y - a.y, b.z - a.z});
+    const Vec3 uc = unit_vector({c.x - a.x, c.y - a.y, c.z - a.z});
+    const Vec3 n_ = unit_vector(
+        {ub.y * uc.z - ub.z * uc.y, ub.z * uc.x - ub.x * uc.z, ub.x * uc.y - ub.y * uc.x});
+    const double tilt = 2.0 * unit(rng) - 1.0;
+    const Vec3 away = unit_vector(
+        {-(ub.x + uc.x) + tilt * n_.x, -(ub.y + uc.y) + tilt * n_.y, -(ub.z + uc.z) + tilt * n_.z});
+    const double t = 0.05 + unit(rng);
+    const double step = std::pow(10.0, -6.0 + 5.0 * unit(rng));
+    const double reach = t * (1.0 + step);
+    const Vec3 p{a.x + reach * away.x, a.y + reach * away.y, a.z + reach * away.z};
+    expect_consistent(a, b, c, p, t);
+    // And as near inside t: closer, whatever decides it.
+    const double inside = t * (1.0 - step);
+    expect_consistent(a, b, c,
+                      {a.x + inside * away.x, a.y + inside * away.y, a.z + inside * away.z}, t);
+    if (HasFatalFailure()) FAIL() << "case " << i;
+    rejected += Filter(a, b, c, t).decide(p) == Filter::kFarther ? 1 : 0;
+  }
+  EXPECT_GT(rejected, n * 99 / 100);
+}
+
 TEST(TriangleDistanceFilter, AgreesForPointsPlacedNearTheThreshold) {
   // Points at t(1 +- 1e-13) from a slanted facet: the filter must hand these to the exact test.
   const Vec3 a{0.1, 0.2, 0.3}, b{3.7, 0.9, 1.3}, c{1.1, 2.9, -0.7};
