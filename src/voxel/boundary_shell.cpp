@@ -14,6 +14,17 @@ namespace strata {
 
 namespace {
 
+/// ceil(x) and floor(x) for x well inside the range of the type: a cast and a compare, where
+/// std::ceil and std::floor are library calls on the baseline x86-64 the project builds for.
+std::int64_t ceil_index(double x) {
+  const auto i = static_cast<std::int64_t>(x);
+  return static_cast<double>(i) < x ? i + 1 : i;
+}
+std::int64_t floor_index(double x) {
+  const auto i = static_cast<std::int64_t>(x);
+  return static_cast<double>(i) > x ? i - 1 : i;
+}
+
 /// The indices i in [0, n) whose centre base + (i + 0.5) d, computed as the tests compute it,
 /// lies in [lo, hi] widened by 1e-12 of its ends: the formula's guess, moved to the exact ends by
 /// looking at the centres themselves. i0 > i1 when there is none.
@@ -24,10 +35,10 @@ std::pair<std::int64_t, std::int64_t> centre_range(double base, double d, std::u
   hi += pad;
   const double count = static_cast<double>(n);
   const auto centre = [&](std::int64_t i) { return base + (static_cast<double>(i) + 0.5) * d; };
+  // A first guess, then moved to the exact ends.
   std::int64_t i0 =
-      static_cast<std::int64_t>(std::clamp(std::ceil((lo - base) / d - 0.5), 0.0, count));
-  std::int64_t i1 =
-      static_cast<std::int64_t>(std::clamp(std::floor((hi - base) / d - 0.5), -1.0, count - 1.0));
+      std::max<std::int64_t>(0, ceil_index(std::clamp((lo - base) / d - 0.5, -1.0, count)));
+  std::int64_t i1 = floor_index(std::clamp((hi - base) / d - 0.5, -1.0, count - 1.0));
   const auto last = static_cast<std::int64_t>(n) - 1;
   while (i0 > 0 && centre(i0 - 1) >= lo) --i0;
   while (i0 <= last && centre(i0) < lo) ++i0;
