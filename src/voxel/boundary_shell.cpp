@@ -1,8 +1,10 @@
 #include "strata/voxel/boundary_shell.hpp"
 
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <deque>
 #include <numeric>
@@ -126,26 +128,62 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
   }
   reach_ = 1;
   if (!(thickness_mm_ > 0.0)) return;
-  facets_by_zmin_.resize(mesh_.triangles.size());
-  std::iota(facets_by_zmin_.begin(), facets_by_zmin_.end(), FacetIndex{0});
-  std::vector<double> zmin(mesh_.triangles.size());
-  std::vector<double> zmax(mesh_.triangles.size());
-  for (std::size_t f = 0; f < mesh_.triangles.size(); ++f) {
+  const std::size_t nf = mesh_.triangles.size();
+  std::vector<double> zmin(nf);
+  std::vector<double> zmax(nf);
+  std::vector<std::uint64_t> cube(nf);
+  // Patches: the facets whose centroids share a box of kPatchCells cells by kPatchLayers layers,
+  // counted from the mesh's lowest corner.
+  const Vec3 low = mesh_.bounds().min;
+  const auto box_index = [](double offset, double size) {
+    const double q = std::floor(offset / size);
+    return static_cast<std::uint64_t>(std::clamp(q, 0.0, 2097151.0));  // 21 bits
+  };
+  const double patch_x = kPatchCells * grid_.dx;
+  const double patch_y = kPatchCells * grid_.dy;
+  const double patch_z = kPatchLayers * grid_.dz;
+  tbb::parallel_for(std::size_t{0}, nf, [&](std::size_t f) {
     const auto& t = mesh_.triangles[f];
-    zmin[f] = std::min({mesh_.vertices[t[0]].z, mesh_.vertices[t[1]].z, mesh_.vertices[t[2]].z});
-    zmax[f] = std::max({mesh_.vertices[t[0]].z, mesh_.vertices[t[1]].z, mesh_.vertices[t[2]].z});
-  }
+    const Vec3& a = mesh_.vertices[t[0]];
+    const Vec3& b = mesh_.vertices[t[1]];
+    const Vec3& c = mesh_.vertices[t[2]];
+    zmin[f] = std::min({a.z, b.z, c.z});
+    zmax[f] = std::max({a.z, b.z, c.z});
+    const double cx = (a.x + b.x + c.x) / 3.0;
+    const double cy = (a.y + b.y + c.y) / 3.0;
+    const double cz = (a.z + b.z + c.z) / 3.0;
+    cube[f] = box_index(cz - low.z, patch_z) << 42 | box_index(cy - low.y, patch_y) << 21 |
+              box_index(cx - low.x, patch_x);
+  });
+  facets_by_patch_.resize(nf);
+  std::iota(facets_by_patch_.begin(), facets_by_patch_.end(), FacetIndex{0});
   // Ties by index, so that the parallel sort gives one order.
   tbb::parallel_sort(
-      facets_by_zmin_.begin(), facets_by_zmin_.end(),
-      [&](FacetIndex a, FacetIndex b) { return zmin[a] != zmin[b] ? zmin[a] < zmin[b] : a < b; });
-  zmin_sorted_.resize(facets_by_zmin_.size());
-  zmax_prefix_max_.resize(facets_by_zmin_.size());
+      facets_by_patch_.begin(), facets_by_patch_.end(),
+      [&](FacetIndex a, FacetIndex b) { return cube[a] != cube[b] ? cube[a] < cube[b] : a < b; });
+  std::vector<Patch> patches;
+  for (std::size_t r = 0; r < nf;) {
+    Patch patch{static_cast<std::uint32_t>(r), 0, zmin[facets_by_patch_[r]],
+                zmax[facets_by_patch_[r]]};
+    const std::uint64_t key = cube[facets_by_patch_[r]];
+    for (; r < nf && cube[facets_by_patch_[r]] == key; ++r) {
+      patch.zmin = std::min(patch.zmin, zmin[facets_by_patch_[r]]);
+      patch.zmax = std::max(patch.zmax, zmax[facets_by_patch_[r]]);
+    }
+    patch.end = static_cast<std::uint32_t>(r);
+    patches.push_back(patch);
+  }
+  std::sort(patches.begin(), patches.end(), [](const Patch& a, const Patch& b) {
+    return a.zmin != b.zmin ? a.zmin < b.zmin : a.begin < b.begin;
+  });
+  patches_ = std::move(patches);
+  zmin_sorted_.resize(patches_.size());
+  zmax_prefix_max_.resize(patches_.size());
   double running = -std::numeric_limits<double>::infinity();
-  for (std::size_t r = 0; r < facets_by_zmin_.size(); ++r) {
-    zmin_sorted_[r] = zmin[facets_by_zmin_[r]];
-    running = std::max(running, zmax[facets_by_zmin_[r]]);
-    zmax_prefix_max_[r] = running;
+  for (std::size_t q = 0; q < patches_.size(); ++q) {
+    zmin_sorted_[q] = patches_[q].zmin;
+    running = std::max(running, patches_[q].zmax);
+    zmax_prefix_max_[q] = running;
   }
 }
 
@@ -168,7 +206,7 @@ void BoundaryShell::classify(std::uint32_t k, const SolidLayerLookup& solid,
 
 void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& out) const {
   const double t = thickness_mm_;
-  if (!(t > 0.0) || facets_by_zmin_.empty()) return;
+  if (!(t > 0.0) || patches_.empty()) return;
   const double z = grid_.zk(k);
   // Facets whose z-range meets [z - t, z + t]; the slab is widened a little so that rounding in
   // these double bounds can only add candidates, never drop one (the predicate decides).
@@ -177,87 +215,169 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
   const double z_hi = z + t + slack;
   const std::size_t end =
       std::upper_bound(zmin_sorted_.begin(), zmin_sorted_.end(), z_hi) - zmin_sorted_.begin();
-  // Skip the leading facets that all end below the slab (their running max of zmax is too low).
+  // Skip the leading patches that all end below the slab (their running max of zmax is too low).
   const std::size_t begin =
       std::lower_bound(zmax_prefix_max_.begin(), zmax_prefix_max_.begin() + end, z_lo) -
       zmax_prefix_max_.begin();
-  const std::uint32_t nx = grid_.nx;
   const double inv_dx = 1.0 / grid_.dx;
   constexpr double kNarrowFromCells = 8.0;
+  std::vector<FacetReach> small;
   double box[4];
-  for (std::size_t r = begin; r < end; ++r) {
-    const auto& tri = mesh_.triangles[facets_by_zmin_[r]];
-    const Vec3& a = mesh_.vertices[tri[0]];
-    const Vec3& b = mesh_.vertices[tri[1]];
-    const Vec3& c = mesh_.vertices[tri[2]];
-    if (std::max({a.z, b.z, c.z}) < z_lo) continue;
-    if (!slab_footprint(a, b, c, z_lo, z_hi, box)) continue;
-    // Built when a small facet's box first shows an interior cell: many boxes hold none.
-    std::optional<detail::TriangleDistanceFilter> near;
-    const auto filter = [&]() -> const detail::TriangleDistanceFilter& {
-      if (!near) near.emplace(a, b, c, t);
-      return *near;
-    };
-    // A point closer than t to the facet is closer than sqrt(t^2 - gap^2) to it across the
-    // layer, gap being the facet's z-distance from the layer's plane: the far layers of the
-    // slab search a narrower box. The margins only widen it.
-    const double z_min = std::min({a.z, b.z, c.z});
-    const double z_max = std::max({a.z, b.z, c.z});
-    const double gap = z < z_min ? z_min - z : (z > z_max ? z - z_max : 0.0);
-    const double across = t * t - gap * gap * (1.0 - 1e-12);
-    const double grow = across > 0.0 ? std::sqrt(across) * (1.0 + 1e-9) + t * 1e-9 : t * 1e-9;
-    const auto [i0_box, i1_box] =
-        centre_range(grid_.x0, grid_.dx, grid_.nx, box[0] - grow, box[2] + grow);
-    const auto [j0, j1] = centre_range(grid_.y0, grid_.dy, grid_.ny, box[1] - grow, box[3] + grow);
-    // Narrowing a row to the stretch near the facet pays only on wide facets (a measured
-    // trade: on small facets it costs more than the tests it saves); a small facet's rows are
-    // tested cell by cell.
-    if ((box[2] - box[0]) * inv_dx < kNarrowFromCells) {
-      for (std::int64_t j = j0; j <= j1; ++j) {
-        const double yc = grid_.yc(static_cast<std::uint32_t>(j));
+  for (std::size_t q = begin; q < end; ++q) {
+    const Patch& patch = patches_[q];
+    if (patch.zmax < z_lo) continue;
+    small.clear();
+    for (std::uint32_t r = patch.begin; r < patch.end; ++r) {
+      const auto& tri = mesh_.triangles[facets_by_patch_[r]];
+      const Vec3& a = mesh_.vertices[tri[0]];
+      const Vec3& b = mesh_.vertices[tri[1]];
+      const Vec3& c = mesh_.vertices[tri[2]];
+      const double z_min = std::min({a.z, b.z, c.z});
+      const double z_max = std::max({a.z, b.z, c.z});
+      if (z_max < z_lo || z_min > z_hi) continue;
+      if (!slab_footprint(a, b, c, z_lo, z_hi, box)) continue;
+      // A point closer than t to the facet is closer than sqrt(t^2 - gap^2) to it across the
+      // layer, gap being the facet's z-distance from the layer's plane: the far layers of the
+      // slab search a narrower box. The margins only widen it.
+      const double gap = z < z_min ? z_min - z : (z > z_max ? z - z_max : 0.0);
+      const double across = t * t - gap * gap * (1.0 - 1e-12);
+      const double grow = across > 0.0 ? std::sqrt(across) * (1.0 + 1e-9) + t * 1e-9 : t * 1e-9;
+      const auto [i0_box, i1_box] =
+          centre_range(grid_.x0, grid_.dx, grid_.nx, box[0] - grow, box[2] + grow);
+      const auto [j0, j1] =
+          centre_range(grid_.y0, grid_.dy, grid_.ny, box[1] - grow, box[3] + grow);
+      if (i0_box > i1_box || j0 > j1) continue;
+      // Small facets are tested together, cell by cell over the patch's box (below): a cell
+      // is visited once for the patch rather than once for each of its facets. Narrowing a row
+      // to the stretch near the facet pays only on wide facets.
+      if ((box[2] - box[0]) * inv_dx < kNarrowFromCells) {
+        small.push_back({{&a, &b, &c}, i0_box, i1_box, j0, j1});
+        continue;
+      }
+      mark_near_wide_facet(a, b, c, z, box, grow, i0_box, i1_box, j0, j1, out);
+    }
+    if (small.empty()) continue;
+    mark_near_small_facets(small, z, out);
+  }
+}
+
+void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, double z,
+                                           std::vector<CellClass>& out) const {
+  const double t = thickness_mm_;
+  const std::uint32_t nx = grid_.nx;
+  std::int64_t pi0 = facets[0].i0, pi1 = facets[0].i1, pj0 = facets[0].j0, pj1 = facets[0].j1;
+  for (const FacetReach& m : facets) {
+    pi0 = std::min(pi0, m.i0);
+    pi1 = std::max(pi1, m.i1);
+    pj0 = std::min(pj0, m.j0);
+    pj1 = std::max(pj1, m.j1);
+  }
+  const auto test = [&](const FacetReach& facet,
+                        std::optional<detail::TriangleDistanceFilter>& filter, std::int64_t i,
+                        std::int64_t j) {
+    // Built when the facet's box first shows an interior cell: many boxes hold none.
+    if (!filter) filter.emplace(*facet.corner[0], *facet.corner[1], *facet.corner[2], t);
+    return filter->closer_than(
+        Vec3{grid_.xc(static_cast<std::uint32_t>(i)), grid_.yc(static_cast<std::uint32_t>(j)), z});
+  };
+  std::optional<detail::TriangleDistanceFilter> filter;
+  if (pi1 - pi0 >= 64) {
+    // Wider than a word: each facet over its own box.
+    for (const FacetReach& facet : facets) {
+      filter.reset();
+      for (std::int64_t j = facet.j0; j <= facet.j1; ++j) {
         CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
-        for (std::int64_t i = i0_box; i <= i1_box; ++i) {
-          if (row[i] != CellClass::Interior) continue;
-          if (filter().closer_than(Vec3{grid_.xc(static_cast<std::uint32_t>(i)), yc, z})) {
+        for (std::int64_t i = facet.i0; i <= facet.i1; ++i) {
+          if (row[i] == CellClass::Interior && test(facet, filter, i, j)) {
             row[i] = CellClass::Boundary;
           }
         }
       }
-      continue;
     }
-    detail::TriangleDistanceFilter::RowBound bounds[detail::TriangleDistanceFilter::kMaxRowBounds];
-    const int bound_count =
-        filter().row_bounds(z, box[1] - grow, box[3] + grow, box[0] - grow, box[2] + grow, bounds);
-    for (std::int64_t j = j0; j <= j1; ++j) {
-      const double yc = grid_.yc(static_cast<std::uint32_t>(j));
-      double x_lo = box[0] - grow;
-      double x_hi = box[2] + grow;
-      for (int q = 0; q < bound_count; ++q) bounds[q].clip(yc, x_lo, x_hi);
-      if (!(x_lo <= x_hi)) continue;
-      const auto [row_i0, row_i1] = centre_range(grid_.x0, grid_.dx, grid_.nx, x_lo, x_hi);
-      const std::int64_t i0 = std::max(i0_box, row_i0);
-      const std::int64_t i1 = std::min(i1_box, row_i1);
-      CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
-      const auto closer = [&](std::int64_t i) {
-        return filter().closer_than(Vec3{grid_.xc(static_cast<std::uint32_t>(i)), yc, z});
-      };
-      // The distance to a triangle is convex along the row, so the centres closer than t form
-      // one run: find its first and last interior cell by the exact test, from either end, and
-      // every interior cell between them is closer too.
-      std::int64_t first_closer = i0;
-      while (first_closer <= i1 &&
-             (row[first_closer] != CellClass::Interior || !closer(first_closer))) {
-        ++first_closer;
+    return;
+  }
+  // The interior cells of the patch's box, a bit each (bit i - pi0 of row j - pj0): a cell is
+  // read once for the patch, and each facet visits only the interior cells of its box.
+  std::uint64_t interior[kMaxPatchRows];
+  const std::int64_t rows = std::min<std::int64_t>(pj1 - pj0 + 1, kMaxPatchRows);
+  for (std::int64_t r = 0; r < rows; ++r) {
+    const CellClass* row = out.data() + static_cast<std::size_t>(pj0 + r) * nx;
+    std::uint64_t bits = 0;
+    for (std::int64_t i = pi0; i <= pi1; ++i) {
+      bits |= static_cast<std::uint64_t>(row[i] == CellClass::Interior) << (i - pi0);
+    }
+    interior[r] = bits;
+  }
+  for (const FacetReach& facet : facets) {
+    filter.reset();
+    const std::uint64_t span = facet.i1 - facet.i0 + 1;
+    const std::uint64_t in_box = (span >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << span) - 1)
+                                 << (facet.i0 - pi0);
+    for (std::int64_t j = facet.j0; j <= facet.j1; ++j) {
+      const std::int64_t r = j - pj0;
+      if (r >= kMaxPatchRows) {
+        // A patch taller than the words kept: the rows beyond, cell by cell.
+        CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
+        for (std::int64_t i = facet.i0; i <= facet.i1; ++i) {
+          if (row[i] == CellClass::Interior && test(facet, filter, i, j)) {
+            row[i] = CellClass::Boundary;
+          }
+        }
+        continue;
       }
-      if (first_closer > i1) continue;
-      std::int64_t last_closer = i1;
-      while (last_closer > first_closer &&
-             (row[last_closer] != CellClass::Interior || !closer(last_closer))) {
-        --last_closer;
+      std::uint64_t candidates = interior[r] & in_box;
+      while (candidates != 0) {
+        const int bit = std::countr_zero(candidates);
+        candidates &= candidates - 1;
+        const std::int64_t i = pi0 + bit;
+        if (test(facet, filter, i, j)) {
+          out[static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i)] = CellClass::Boundary;
+          interior[r] &= ~(std::uint64_t{1} << bit);
+        }
       }
-      for (std::int64_t i = first_closer; i <= last_closer; ++i) {
-        if (row[i] == CellClass::Interior) row[i] = CellClass::Boundary;
-      }
+    }
+  }
+}
+
+void BoundaryShell::mark_near_wide_facet(const Vec3& a, const Vec3& b, const Vec3& c, double z,
+                                         const double box[4], double grow, std::int64_t i0_box,
+                                         std::int64_t i1_box, std::int64_t j0, std::int64_t j1,
+                                         std::vector<CellClass>& out) const {
+  const double t = thickness_mm_;
+  const std::uint32_t nx = grid_.nx;
+  const detail::TriangleDistanceFilter filter(a, b, c, t);
+  detail::TriangleDistanceFilter::RowBound bounds[detail::TriangleDistanceFilter::kMaxRowBounds];
+  const int bound_count =
+      filter.row_bounds(z, box[1] - grow, box[3] + grow, box[0] - grow, box[2] + grow, bounds);
+  for (std::int64_t j = j0; j <= j1; ++j) {
+    const double yc = grid_.yc(static_cast<std::uint32_t>(j));
+    double x_lo = box[0] - grow;
+    double x_hi = box[2] + grow;
+    for (int q = 0; q < bound_count; ++q) bounds[q].clip(yc, x_lo, x_hi);
+    if (!(x_lo <= x_hi)) continue;
+    const auto [row_i0, row_i1] = centre_range(grid_.x0, grid_.dx, grid_.nx, x_lo, x_hi);
+    const std::int64_t i0 = std::max(i0_box, row_i0);
+    const std::int64_t i1 = std::min(i1_box, row_i1);
+    CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
+    const auto closer = [&](std::int64_t i) {
+      return filter.closer_than(Vec3{grid_.xc(static_cast<std::uint32_t>(i)), yc, z});
+    };
+    // The distance to a triangle is convex along the row, so the centres closer than t form
+    // one run: find its first and last interior cell by the exact test, from either end, and
+    // every interior cell between them is closer too.
+    std::int64_t first_closer = i0;
+    while (first_closer <= i1 &&
+           (row[first_closer] != CellClass::Interior || !closer(first_closer))) {
+      ++first_closer;
+    }
+    if (first_closer > i1) continue;
+    std::int64_t last_closer = i1;
+    while (last_closer > first_closer &&
+           (row[last_closer] != CellClass::Interior || !closer(last_closer))) {
+      --last_closer;
+    }
+    for (std::int64_t i = first_closer; i <= last_closer; ++i) {
+      if (row[i] == CellClass::Interior) row[i] = CellClass::Boundary;
     }
   }
 }

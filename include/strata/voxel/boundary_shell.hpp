@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "strata/mesh/indexed_mesh.hpp"
@@ -42,6 +43,20 @@ class BoundaryShell {
 
  private:
   void mark_near_surface(std::uint32_t k, std::vector<CellClass>& out) const;
+  /// A facet, with the box of cells of a layer it can reach.
+  struct FacetReach {
+    const Vec3* corner[3];
+    std::int64_t i0, i1, j0, j1;
+  };
+  static constexpr std::int64_t kMaxPatchRows = 64;
+  /// The small facets of a patch, tested over the patch's box.
+  void mark_near_small_facets(std::span<const FacetReach> facets, double z,
+                              std::vector<CellClass>& out) const;
+  /// A facet at least kNarrowFromCells wide: each row narrowed to the stretch near the facet.
+  void mark_near_wide_facet(const Vec3& a, const Vec3& b, const Vec3& c, double z,
+                            const double box[4], double grow, std::int64_t i0_box,
+                            std::int64_t i1_box, std::int64_t j0, std::int64_t j1,
+                            std::vector<CellClass>& out) const;
   void mark_rings(std::uint32_t k, const SolidLayerLookup& solid,
                   std::vector<CellClass>& out) const;
 
@@ -52,9 +67,17 @@ class BoundaryShell {
   std::uint32_t reach_ = 1;
   std::uint32_t rings_ = 1;
   bool unequal_sizes_ = false;
-  // Distance mode: facets sorted by their lowest z, with the running maximum of their highest z,
-  // so the facets within t of a plane are found by two binary searches.
-  std::vector<FacetIndex> facets_by_zmin_;
+  // Distance mode: the facets in patches of neighbours (their centroids in one cube of
+  // kPatchCells cells a side), the patches sorted by their lowest z with the running maximum of
+  // their highest z, so the patches within t of a plane are found by two binary searches.
+  static constexpr double kPatchCells = 16.0;
+  static constexpr double kPatchLayers = 4.0;
+  struct Patch {
+    std::uint32_t begin = 0, end = 0;  ///< in facets_by_patch_
+    double zmin = 0.0, zmax = 0.0;
+  };
+  std::vector<FacetIndex> facets_by_patch_;
+  std::vector<Patch> patches_;
   std::vector<double> zmin_sorted_;
   std::vector<double> zmax_prefix_max_;
 };

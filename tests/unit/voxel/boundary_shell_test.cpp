@@ -54,9 +54,11 @@ bool may_reach(const IndexedMesh& mesh, const std::array<VertexIndex, 3>& t, con
   return true;
 }
 
-/// Slices `mesh` with the distance shell t and checks every cell against the definition; returns
-/// how many cells the distance (not the outside) made boundary.
-std::size_t expect_shell_by_definition(const IndexedMesh& mesh, double cell, double t) {
+/// Slices `mesh` with the distance shell t and checks every cell against the definition (of
+/// every `layer_step`-th layer); returns how many cells the distance (not the outside) made
+/// boundary.
+std::size_t expect_shell_by_definition(const IndexedMesh& mesh, double cell, double t,
+                                       std::uint32_t layer_step = 1) {
   SliceOptions options;
   options.grid = GridOptions{cell, cell, cell, std::nullopt};
   options.shell_mode = ShellMode::Distance;
@@ -78,7 +80,7 @@ std::size_t expect_shell_by_definition(const IndexedMesh& mesh, double cell, dou
   };
   std::size_t by_distance = 0;
   std::size_t wrong = 0;
-  for (std::uint32_t k = 0; k < g.nz; ++k) {
+  for (std::uint32_t k = 0; k < g.nz; k += layer_step) {
     for (std::uint32_t j = 0; j < g.ny; ++j) {
       for (std::uint32_t i = 0; i < g.nx; ++i) {
         if (!solid(i, j, k)) continue;
@@ -122,6 +124,18 @@ TEST(BoundaryShell, ATetrahedronAndASphereAreTheirDefinitionCellForCell) {
   // 320 facets about 1.6 mm wide: rows of six to eight cells, decided cell by cell or as runs.
   const IndexedMesh ball = weld_vertices(rotated(mesh::make_sphere(5.0, 2), 0.1, 0.2, 0.3));
   EXPECT_GT(expect_shell_by_definition(ball, 0.2, 0.7), 100u);
+}
+
+TEST(BoundaryShell, SmallFacetsReachingFarAreTheirDefinitionCellForCell) {
+  // Small facets are tested together, a patch of neighbours at a time, over the patch's box.
+  // A shell of 36 cells makes that box wider than the 64 cells the shell keeps as bits.
+  const IndexedMesh ball = weld_vertices(rotated(mesh::make_sphere(1.0, 3), 0.3, 0.1, 0.2));
+  EXPECT_GT(expect_shell_by_definition(ball, 0.025, 0.9, 13), 1000u);
+  // A cylinder lying along y: its sides are strips a few cells across and 90 rows long, so a
+  // patch's box is narrow but taller than the 64 rows kept as bits.
+  const IndexedMesh rod =
+      weld_vertices(rotated(mesh::make_cylinder(1.5, 9.0, 40), 1.5707963267948966, 0.0, 0.05));
+  EXPECT_GT(expect_shell_by_definition(rod, 0.1, 0.45), 1000u);
 }
 
 TEST(BoundaryShell, FacetsInsideTheSolidMakeAShellAroundThemToo) {
