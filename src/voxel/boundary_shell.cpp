@@ -49,6 +49,30 @@ std::pair<std::int64_t, std::int64_t> centre_range(double base, double d, std::u
   return {i0, i1};
 }
 
+/// The cells along one axis of the grid: centre i at base + (i + 0.5) d, for i in [0, n).
+struct GridAxis {
+  double base, d, inv_d;
+  std::uint32_t n;
+  GridAxis(double base_, double d_, std::uint32_t n_)
+      : base(base_), d(d_), inv_d(1.0 / d_), n(n_) {}
+
+  /// The indices of the centres in [lo, hi], and perhaps one more at an end that a centre only
+  /// rounding away from the bound would leave out: the cells a facet may reach, for the exact
+  /// test to decide. By the formula alone, where centre_range() looks at the centres.
+  std::pair<std::int64_t, std::int64_t> cells_reaching(double lo, double hi) const {
+    const double count = static_cast<double>(n);
+    // The rounding of these few operations, relative to the magnitudes involved, and the
+    // 1e-12 of the bounds that centre_range() allows.
+    const double pad =
+        1e-9 + (2e-12 * std::max(std::fabs(lo), std::fabs(hi)) + 1e-14 * std::fabs(base)) * inv_d;
+    const std::int64_t i0 = std::max<std::int64_t>(
+        0, ceil_index(std::clamp((lo - base) * inv_d - 0.5 - pad, -1.0, count)));
+    const std::int64_t i1 =
+        floor_index(std::clamp((hi - base) * inv_d - 0.5 + pad, -1.0, count - 1.0));
+    return {i0, i1};
+  }
+};
+
 /// The x-y bounding box of the part of triangle abc within z in [z_lo, z_hi]; false if none.
 bool slab_footprint(const Vec3& a, const Vec3& b, const Vec3& c, double z_lo, double z_hi,
                     double box[4]) {
@@ -220,6 +244,8 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
       std::lower_bound(zmax_prefix_max_.begin(), zmax_prefix_max_.begin() + end, z_lo) -
       zmax_prefix_max_.begin();
   const double inv_dx = 1.0 / grid_.dx;
+  const GridAxis x_axis(grid_.x0, grid_.dx, grid_.nx);
+  const GridAxis y_axis(grid_.y0, grid_.dy, grid_.ny);
   constexpr double kNarrowFromCells = 8.0;
   std::vector<FacetReach> small;
   double box[4];
@@ -242,10 +268,8 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
       const double gap = z < z_min ? z_min - z : (z > z_max ? z - z_max : 0.0);
       const double across = t * t - gap * gap * (1.0 - 1e-12);
       const double grow = across > 0.0 ? std::sqrt(across) * (1.0 + 1e-9) + t * 1e-9 : t * 1e-9;
-      const auto [i0_box, i1_box] =
-          centre_range(grid_.x0, grid_.dx, grid_.nx, box[0] - grow, box[2] + grow);
-      const auto [j0, j1] =
-          centre_range(grid_.y0, grid_.dy, grid_.ny, box[1] - grow, box[3] + grow);
+      const auto [i0_box, i1_box] = x_axis.cells_reaching(box[0] - grow, box[2] + grow);
+      const auto [j0, j1] = y_axis.cells_reaching(box[1] - grow, box[3] + grow);
       if (i0_box > i1_box || j0 > j1) continue;
       // Small facets are tested together, cell by cell over the patch's box (below): a cell
       // is visited once for the patch rather than once for each of its facets. Narrowing a row
