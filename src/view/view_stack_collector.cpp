@@ -78,17 +78,25 @@ std::unique_ptr<PreparedLayer> ViewStackCollector::prepare_layer(const LayerResu
 
   out->blocks.assign(std::size_t{v.ny} * v.nx, 0);
   if (layer.cells.size() == g.cells_per_layer()) {
-    for (std::uint32_t j = 0; j < g.ny; ++j) {
-      std::uint8_t* row = out->blocks.data() + std::size_t{j / v.by} * v.nx;
-      const CellClass* cells = layer.cells.data() + std::size_t{j} * g.nx;
-      // Block by block: the largest code of the block's cells of this row.
+    // A block holds the largest code of its cells. The codes are 0, 1 and 3, so the largest is
+    // their bitwise or: the rows of a block row are or-ed cell by cell (a loop the compiler
+    // takes many cells a step), then each block's cells of that one row.
+    std::vector<std::uint8_t> merged(g.nx);
+    const auto* codes = reinterpret_cast<const std::uint8_t*>(layer.cells.data());
+    for (std::uint32_t bj = 0; bj < v.ny; ++bj) {
+      const std::uint32_t j0 = bj * v.by;
+      const std::uint32_t j1 = std::min(g.ny, j0 + v.by);
+      std::fill(merged.begin(), merged.end(), std::uint8_t{0});
+      for (std::uint32_t j = j0; j < j1; ++j) {
+        const std::uint8_t* row = codes + std::size_t{j} * g.nx;
+        for (std::uint32_t i = 0; i < g.nx; ++i) merged[i] |= row[i];
+      }
+      std::uint8_t* blocks = out->blocks.data() + std::size_t{bj} * v.nx;
       for (std::uint32_t i0 = 0, b = 0; i0 < g.nx; i0 += v.bx, ++b) {
         const std::uint32_t i1 = std::min(g.nx, i0 + v.bx);
-        std::uint8_t block = row[b];
-        for (std::uint32_t i = i0; i < i1; ++i) {
-          block = std::max(block, static_cast<std::uint8_t>(cells[i]));
-        }
-        row[b] = block;
+        std::uint8_t block = 0;
+        for (std::uint32_t i = i0; i < i1; ++i) block |= merged[i];
+        blocks[b] = block;
       }
     }
   }

@@ -1,6 +1,9 @@
 // What the view page holds of each layer: packed as the cells file, blocks for 3D, the budget.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+
 #include "strata/view/view_stack.hpp"
 #include "support/page_encodings.hpp"
 #include "support/sink_runs.hpp"
@@ -78,6 +81,48 @@ TEST(ViewStackCollector, VolumeBlocksHoldTheHighestClassOfTheirCells) {
   EXPECT_EQ(v.nz, 2u);
   ASSERT_EQ(v.blocks.size(), 8u);
   for (std::uint8_t b : v.blocks) EXPECT_EQ(b, 3) << "every block touches the boundary rim";
+}
+
+TEST(ViewStackCollector, EachVolumeBlockIsTheHighestClassOfItsCellsWhateverTheirMix) {
+  // Random classes on a grid whose blocks do not divide it evenly: every block against the
+  // highest class of the cells it covers, found cell by cell.
+  const SliceRunInfo run = run_on(23, 17, 9);
+  const GridSpec& g = run.grid;
+  std::mt19937 rng(7);
+  const CellClass classes[] = {CellClass::Empty, CellClass::Interior, CellClass::Boundary};
+  std::vector<std::vector<CellClass>> layers(g.nz, std::vector<CellClass>(g.cells_per_layer()));
+  for (auto& layer : layers) {
+    // Mostly empty or interior, so that many blocks stop below the boundary class.
+    for (CellClass& c : layer) c = classes[rng() % 16 == 0 ? 2 : rng() % 2];
+  }
+  ViewStackCollector sink(ViewStackOptions{.max_blocks = 6});
+  ASSERT_TRUE(sink.begin(run).has_value());
+  for (std::uint32_t k = 0; k < g.nz; ++k) {
+    ASSERT_TRUE(sink.add_layer(LayerResult{k, g.zk(k), layers[k], {}, {}}).has_value());
+  }
+  ASSERT_TRUE(sink.finish().has_value());
+  const ViewVolume v = sink.take().volume;
+  ASSERT_GT(v.bx, 1u);
+  ASSERT_GT(v.by, 1u);
+  std::size_t below_boundary = 0;
+  for (std::uint32_t bk = 0; bk < v.nz; ++bk) {
+    for (std::uint32_t bj = 0; bj < v.ny; ++bj) {
+      for (std::uint32_t bi = 0; bi < v.nx; ++bi) {
+        std::uint8_t highest = 0;
+        for (std::uint32_t k = bk * v.bz; k < std::min(g.nz, (bk + 1) * v.bz); ++k) {
+          for (std::uint32_t j = bj * v.by; j < std::min(g.ny, (bj + 1) * v.by); ++j) {
+            for (std::uint32_t i = bi * v.bx; i < std::min(g.nx, (bi + 1) * v.bx); ++i) {
+              highest = std::max(highest, static_cast<std::uint8_t>(layers[k][j * g.nx + i]));
+            }
+          }
+        }
+        below_boundary += highest < 3 ? 1 : 0;
+        EXPECT_EQ(v.blocks[(std::size_t{bk} * v.ny + bj) * v.nx + bi], highest)
+            << "block (" << bi << ", " << bj << ", " << bk << ")";
+      }
+    }
+  }
+  EXPECT_GT(below_boundary, 0u);
 }
 
 TEST(ViewStackCollector, KeepsTheSameWhetherLayersArePreparedAheadOrNot) {
