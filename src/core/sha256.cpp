@@ -2,6 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cstring>
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <cpuid.h>
+#include <immintrin.h>
+#endif
+
 namespace strata::detail {
 
 namespace {
@@ -18,21 +26,151 @@ constexpr std::array<std::uint32_t, 64> kRound = {
 
 constexpr std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
 
+/// The compression function in plain C++, block by block.
+void compress_portable(std::uint32_t* state, const unsigned char* data, std::size_t blocks) {
+  for (; blocks > 0; --blocks, data += 64) {
+    std::array<std::uint32_t, 64> w{};
+    for (int i = 0; i < 16; ++i) {
+      w[i] = (std::uint32_t{data[4 * i]} << 24) | (std::uint32_t{data[4 * i + 1]} << 16) |
+             (std::uint32_t{data[4 * i + 2]} << 8) | std::uint32_t{data[4 * i + 3]};
+    }
+    for (int i = 16; i < 64; ++i) {
+      const std::uint32_t s0 = rotr(w[i - 15], 7) ^ rotr(w[i - 15], 18) ^ (w[i - 15] >> 3);
+      const std::uint32_t s1 = rotr(w[i - 2], 17) ^ rotr(w[i - 2], 19) ^ (w[i - 2] >> 10);
+      w[i] = w[i - 16] + s0 + w[i - 7] + s1;
+    }
+    std::uint32_t a = state[0], b = state[1], c = state[2], d = state[3];
+    std::uint32_t e = state[4], f = state[5], g = state[6], h = state[7];
+    for (int i = 0; i < 64; ++i) {
+      const std::uint32_t s1 = rotr(e, 6) ^ rotr(e, 11) ^ rotr(e, 25);
+      const std::uint32_t ch = (e & f) ^ (~e & g);
+      const std::uint32_t t1 = h + s1 + ch + kRound[i] + w[i];
+      const std::uint32_t s0 = rotr(a, 2) ^ rotr(a, 13) ^ rotr(a, 22);
+      const std::uint32_t maj = (a & b) ^ (a & c) ^ (b & c);
+      h = g;
+      g = f;
+      f = e;
+      e = d + t1;
+      d = c;
+      c = b;
+      b = a;
+      a = t1 + s0 + maj;
+    }
+    state[0] += a;
+    state[1] += b;
+    state[2] += c;
+    state[3] += d;
+    state[4] += e;
+    state[5] += f;
+    state[6] += g;
+    state[7] += h;
+  }
+}
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define STRATA_SHA256_X86 1
+
+/// The compression function on the processor's SHA extensions (four rounds an instruction
+/// pair), where they exist: several times the plain version's speed on a model file.
+__attribute__((target("sha,sse4.1"))) void compress_sha_extensions(std::uint32_t* state,
+                                                                   const unsigned char* data,
+                                                                   std::size_t blocks) {
+  // The instructions keep the state as (a, b, e, f) and (c, d, g, h), highest word first.
+  const __m128i byte_swap = _mm_set_epi64x(0x0c0d0e0f08090a0bULL, 0x0405060700010203ULL);
+  __m128i dcba = _mm_loadu_si128(reinterpret_cast<const __m128i*>(state));
+  __m128i hgfe = _mm_loadu_si128(reinterpret_cast<const __m128i*>(state + 4));
+  const __m128i cdab = _mm_shuffle_epi32(dcba, 0xB1);
+  const __m128i efgh = _mm_shuffle_epi32(hgfe, 0x1B);
+  __m128i abef = _mm_alignr_epi8(cdab, efgh, 8);
+  __m128i cdgh = _mm_blend_epi16(efgh, cdab, 0xF0);
+  for (; blocks > 0; --blocks, data += 64) {
+    const __m128i abef_before = abef;
+    const __m128i cdgh_before = cdgh;
+    // w[q % 4]: the message words 4q .. 4q + 3 of the schedule, the last four groups kept.
+    __m128i w[4];
+    for (int q = 0; q < 16; ++q) {
+      __m128i& words = w[q % 4];
+      if (q < 4) {
+        words = _mm_shuffle_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(data + 16 * q)),
+                                 byte_swap);
+      } else {
+        // W[t] = s1(W[t-2]) + W[t-7] + s0(W[t-15]) + W[t-16], four words at once.
+        const __m128i& back1 = w[(q + 3) % 4];  // group q - 1
+        const __m128i& back2 = w[(q + 2) % 4];  // group q - 2
+        const __m128i& back3 = w[(q + 1) % 4];  // group q - 3
+        __m128i next = _mm_sha256msg1_epu32(words, back3);
+        next = _mm_add_epi32(next, _mm_alignr_epi8(back1, back2, 4));
+        words = _mm_sha256msg2_epu32(next, back1);
+      }
+      __m128i message = _mm_add_epi32(
+          words, _mm_loadu_si128(reinterpret_cast<const __m128i*>(kRound.data() + 4 * q)));
+      cdgh = _mm_sha256rnds2_epu32(cdgh, abef, message);
+      message = _mm_shuffle_epi32(message, 0x0E);
+      abef = _mm_sha256rnds2_epu32(abef, cdgh, message);
+    }
+    abef = _mm_add_epi32(abef, abef_before);
+    cdgh = _mm_add_epi32(cdgh, cdgh_before);
+  }
+  const __m128i feba = _mm_shuffle_epi32(abef, 0x1B);
+  const __m128i dchg = _mm_shuffle_epi32(cdgh, 0xB1);
+  dcba = _mm_blend_epi16(feba, dchg, 0xF0);
+  hgfe = _mm_alignr_epi8(dchg, feba, 8);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(state), dcba);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(state + 4), hgfe);
+}
+
+bool has_sha_extensions() {
+  unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+  if (__get_cpuid(1, &eax, &ebx, &ecx, &edx) == 0) return false;
+  const bool ssse3 = (ecx & (1U << 9)) != 0;
+  const bool sse41 = (ecx & (1U << 19)) != 0;
+  if (__get_cpuid_count(7, 0, &eax, &ebx, &ecx, &edx) == 0) return false;
+  const bool sha = (ebx & (1U << 29)) != 0;
+  return ssse3 && sse41 && sha;
+}
+#endif
+
+Sha256::CompressFunction best_compress() {
+#ifdef STRATA_SHA256_X86
+  if (has_sha_extensions()) return compress_sha_extensions;
+#endif
+  return compress_portable;
+}
+
+/// Chosen once, on first use (not at static initialisation, which another file's may precede).
+Sha256::CompressFunction chosen_compress() {
+  static const Sha256::CompressFunction chosen = best_compress();
+  return chosen;
+}
+
 }  // namespace
 
 Sha256::Sha256()
     : state_{0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
-             0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19} {}
+             0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19},
+      compress_(chosen_compress()) {}
 
 void Sha256::update(std::string_view bytes) {
   length_bytes_ += bytes.size();
-  for (const char c : bytes) {
-    block_[block_used_++] = static_cast<unsigned char>(c);
-    if (block_used_ == block_.size()) {
-      compress(block_.data());
-      block_used_ = 0;
-    }
+  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+  std::size_t size = bytes.size();
+  if (block_used_ > 0) {
+    const std::size_t take = std::min(size, block_.size() - block_used_);
+    std::memcpy(block_.data() + block_used_, data, take);
+    block_used_ += take;
+    data += take;
+    size -= take;
+    if (block_used_ < block_.size()) return;
+    compress_(state_.data(), block_.data(), 1);
+    block_used_ = 0;
   }
+  // Whole blocks straight from the input.
+  const std::size_t blocks = size / 64;
+  if (blocks > 0) compress_(state_.data(), data, blocks);
+  data += 64 * blocks;
+  size -= 64 * blocks;
+  std::memcpy(block_.data(), data, size);
+  block_used_ = size;
 }
 
 std::string Sha256::hex_digest() const {
@@ -51,28 +189,13 @@ std::string Sha256::hex_digest() const {
   return out;
 }
 
-void Sha256::compress(const unsigned char* block) {
-  std::array<std::uint32_t, 64> w{};
-  for (int i = 0; i < 16; ++i) {
-    w[i] = (std::uint32_t{block[4 * i]} << 24) | (std::uint32_t{block[4 * i + 1]} << 16) |
-           (std::uint32_t{block[4 * i + 2]} << 8) | std::uint32_t{block[4 * i + 3]};
-  }
-  for (int i = 16; i < 64; ++i) {
-    const std::uint32_t s0 = rotr(w[i - 15], 7) ^ rotr(w[i - 15], 18) ^ (w[i - 15] >> 3);
-    const std::uint32_t s1 = rotr(w[i - 2], 17) ^ rotr(w[i - 2], 19) ^ (w[i - 2] >> 10);
-    w[i] = w[i - 16] + s0 + w[i - 7] + s1;
-  }
-  std::array<std::uint32_t, 8> v = state_;
-  for (int i = 0; i < 64; ++i) {
-    const std::uint32_t s1 = rotr(v[4], 6) ^ rotr(v[4], 11) ^ rotr(v[4], 25);
-    const std::uint32_t ch = (v[4] & v[5]) ^ (~v[4] & v[6]);
-    const std::uint32_t t1 = v[7] + s1 + ch + kRound[i] + w[i];
-    const std::uint32_t s0 = rotr(v[0], 2) ^ rotr(v[0], 13) ^ rotr(v[0], 22);
-    const std::uint32_t maj = (v[0] & v[1]) ^ (v[0] & v[2]) ^ (v[1] & v[2]);
-    const std::uint32_t t2 = s0 + maj;
-    v = {t1 + t2, v[0], v[1], v[2], v[3] + t1, v[4], v[5], v[6]};
-  }
-  for (int i = 0; i < 8; ++i) state_[i] += v[i];
+bool Sha256::uses_processor_extensions() { return chosen_compress() != compress_portable; }
+
+std::string Sha256::portable_hex_digest(std::string_view bytes) {
+  Sha256 hash;
+  hash.compress_ = compress_portable;
+  hash.update(bytes);
+  return hash.hex_digest();
 }
 
 }  // namespace strata::detail

@@ -4,6 +4,7 @@
 // boundary.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -18,13 +19,22 @@ class Sha256 {
   /// The digest of the bytes so far, as 64 lower-case hex digits.
   std::string hex_digest() const;
 
- private:
-  void compress(const unsigned char* block);
+  /// Whether whole blocks go to the processor's SHA instructions (x86-64 with the SHA
+  /// extensions) rather than the plain C++ rounds.
+  static bool uses_processor_extensions();
+  /// The digest of `bytes` by the plain C++ rounds alone, whatever the processor: for tests.
+  static std::string portable_hex_digest(std::string_view bytes);
 
+  /// Compresses `blocks` whole 64-byte blocks into the state.
+  using CompressFunction = void (*)(std::uint32_t* state, const unsigned char* data,
+                                    std::size_t blocks);
+
+ private:
   std::array<std::uint32_t, 8> state_;
   std::array<unsigned char, 64> block_{};
   std::size_t block_used_ = 0;
   std::uint64_t length_bytes_ = 0;
+  CompressFunction compress_;
 };
 
 }  // namespace strata::detail

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+#include <string>
+
 #include "core/sha256.hpp"
 #include "support/temp_dir.hpp"
 #include "support/text_meshes.hpp"
@@ -29,6 +33,41 @@ TEST(Sha256, MatchesTheStandardsVectors) {
   EXPECT_EQ(growing.hex_digest(), growing.hex_digest());
   growing.update("c");
   EXPECT_EQ(growing.hex_digest(), abc.hex_digest());
+}
+
+TEST(Sha256, ThePlainRoundsMatchTheStandardsVectorsToo) {
+  // Whichever rounds hash_digest() uses on this processor, the plain ones are checked here.
+  EXPECT_EQ(detail::Sha256::portable_hex_digest(""),
+            "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(detail::Sha256::portable_hex_digest(
+                "abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+  // One million 'a' (FIPS 180-4's long example): many whole blocks.
+  EXPECT_EQ(detail::Sha256::portable_hex_digest(std::string(1'000'000, 'a')),
+            "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}
+
+TEST(Sha256, AgreesWithThePlainRoundsOnEveryLengthAndSplit) {
+  // Random messages of every length across a few blocks, fed whole and in random pieces: the
+  // digest is the plain rounds' (on a processor with SHA instructions, theirs against it).
+  std::mt19937 rng(2026);
+  std::string message;
+  for (std::size_t length = 0; length <= 1100; length += length < 200 ? 1 : 37) {
+    message.resize(length);
+    for (char& c : message) c = static_cast<char>(rng());
+    const std::string expected = detail::Sha256::portable_hex_digest(message);
+    detail::Sha256 whole;
+    whole.update(message);
+    ASSERT_EQ(whole.hex_digest(), expected) << "length " << length;
+    detail::Sha256 pieces;
+    for (std::size_t at = 0; at < length;) {
+      const std::size_t piece = std::min<std::size_t>(length - at, rng() % 150);
+      pieces.update(std::string_view(message).substr(at, piece));
+      at += piece;
+    }
+    ASSERT_EQ(pieces.hex_digest(), expected) << "length " << length;
+  }
+  RecordProperty("processor_extensions", detail::Sha256::uses_processor_extensions() ? 1 : 0);
 }
 
 TEST(SliceFingerprint, ChangesWithTheModelBytesAndTheCellOptions) {
