@@ -179,24 +179,30 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
     cube[f] = box_index(cz - low.z, patch_z) << 42 | box_index(cy - low.y, patch_y) << 21 |
               box_index(cx - low.x, patch_x);
   });
-  facets_by_patch_.resize(nf);
-  std::iota(facets_by_patch_.begin(), facets_by_patch_.end(), FacetIndex{0});
+  std::vector<FacetIndex> facets_by_patch(nf);
+  std::iota(facets_by_patch.begin(), facets_by_patch.end(), FacetIndex{0});
   // Ties by index, so that the parallel sort gives one order.
   tbb::parallel_sort(
-      facets_by_patch_.begin(), facets_by_patch_.end(),
+      facets_by_patch.begin(), facets_by_patch.end(),
       [&](FacetIndex a, FacetIndex b) { return cube[a] != cube[b] ? cube[a] < cube[b] : a < b; });
   std::vector<Patch> patches;
   for (std::size_t r = 0; r < nf;) {
-    Patch patch{static_cast<std::uint32_t>(r), 0, zmin[facets_by_patch_[r]],
-                zmax[facets_by_patch_[r]]};
-    const std::uint64_t key = cube[facets_by_patch_[r]];
-    for (; r < nf && cube[facets_by_patch_[r]] == key; ++r) {
-      patch.zmin = std::min(patch.zmin, zmin[facets_by_patch_[r]]);
-      patch.zmax = std::max(patch.zmax, zmax[facets_by_patch_[r]]);
+    Patch patch{static_cast<std::uint32_t>(r), 0, zmin[facets_by_patch[r]],
+                zmax[facets_by_patch[r]]};
+    const std::uint64_t key = cube[facets_by_patch[r]];
+    for (; r < nf && cube[facets_by_patch[r]] == key; ++r) {
+      patch.zmin = std::min(patch.zmin, zmin[facets_by_patch[r]]);
+      patch.zmax = std::max(patch.zmax, zmax[facets_by_patch[r]]);
     }
     patch.end = static_cast<std::uint32_t>(r);
     patches.push_back(patch);
   }
+  // The facets' corners in patch order, read in sequence by the layers rather than gathered
+  // from across the mesh.
+  triangles_by_patch_.resize(nf);
+  tbb::parallel_for(std::size_t{0}, nf, [&](std::size_t r) {
+    triangles_by_patch_[r] = mesh_.triangles[facets_by_patch[r]];
+  });
   std::sort(patches.begin(), patches.end(), [](const Patch& a, const Patch& b) {
     return a.zmin != b.zmin ? a.zmin < b.zmin : a.begin < b.begin;
   });
@@ -254,7 +260,7 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
     if (patch.zmax < z_lo) continue;
     small.clear();
     for (std::uint32_t r = patch.begin; r < patch.end; ++r) {
-      const auto& tri = mesh_.triangles[facets_by_patch_[r]];
+      const auto& tri = triangles_by_patch_[r];
       const Vec3& a = mesh_.vertices[tri[0]];
       const Vec3& b = mesh_.vertices[tri[1]];
       const Vec3& c = mesh_.vertices[tri[2]];

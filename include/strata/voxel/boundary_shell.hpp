@@ -73,10 +73,10 @@ class BoundaryShell {
   static constexpr double kPatchCells = 16.0;
   static constexpr double kPatchLayers = 4.0;
   struct Patch {
-    std::uint32_t begin = 0, end = 0;  ///< in facets_by_patch_
+    std::uint32_t begin = 0, end = 0;  ///< in triangles_by_patch_
     double zmin = 0.0, zmax = 0.0;
   };
-  std::vector<FacetIndex> facets_by_patch_;
+  std::vector<std::array<VertexIndex, 3>> triangles_by_patch_;
   std::vector<Patch> patches_;
   std::vector<double> zmin_sorted_;
   std::vector<double> zmax_prefix_max_;
