@@ -22,28 +22,34 @@ bool is_polygon_mesh(const PolygonRange& polygons, std::size_t point_count) {
   struct Corner {
     std::uint32_t vertex, prev, next, polygon;
   };
-  std::vector<Corner> corners;
   std::size_t corner_count = 0;
   for (const auto& polygon : polygons) {
     if (polygon.size() < 3) return false;
     corner_count += polygon.size();
   }
   if (point_count > UINT32_MAX || polygons.size() > UINT32_MAX) return false;
-  corners.reserve(corner_count);
+  // Corners by vertex, then polygon (the order CGAL visits a vertex's polygons in): a counting
+  // sort by vertex, the polygons taken in order.
+  std::vector<std::size_t> first(point_count + 1, 0);
+  for (const auto& polygon : polygons) {
+    for (const auto v : polygon) {
+      if (static_cast<std::size_t>(v) >= point_count) return false;
+      ++first[static_cast<std::size_t>(v) + 1];
+    }
+  }
+  for (std::size_t v = 0; v < point_count; ++v) first[v + 1] += first[v];
+  std::vector<Corner> corners(corner_count);
   for (std::size_t p = 0; p < polygons.size(); ++p) {
     const auto& polygon = polygons[p];
     const std::size_t n = polygon.size();
     for (std::size_t j = 0; j < n; ++j) {
-      corners.push_back({static_cast<std::uint32_t>(polygon[j]),
-                         static_cast<std::uint32_t>(polygon[(j + n - 1) % n]),
-                         static_cast<std::uint32_t>(polygon[(j + 1) % n]),
-                         static_cast<std::uint32_t>(p)});
+      const auto v = static_cast<std::size_t>(polygon[j]);
+      corners[first[v]++] = {
+          static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(polygon[(j + n - 1) % n]),
+          static_cast<std::uint32_t>(polygon[(j + 1) % n]), static_cast<std::uint32_t>(p)};
     }
   }
-  // Corners by vertex, then polygon (the order CGAL visits a vertex's polygons in).
-  std::sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) {
-    return a.vertex != b.vertex ? a.vertex < b.vertex : a.polygon < b.polygon;
-  });
+  first = {};
   std::vector<bool> visited;
   std::vector<std::uint32_t> by_prev, by_next;  // a vertex's corners (offsets) by prev, by next
   for (std::size_t begin = 0; begin < corners.size();) {
