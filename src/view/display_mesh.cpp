@@ -87,7 +87,8 @@ class Clustering {
   void group_by_cell(double cell) {
     const double inv = 1.0 / cell;
     const auto index = [&](double x, double base) {
-      return static_cast<std::uint64_t>(std::clamp(std::floor((x - base) * inv), 0.0, 2097151.0));
+      // Truncation is the floor here: the offset from the lowest corner is not negative.
+      return static_cast<std::uint64_t>(std::clamp((x - base) * inv, 0.0, 2097151.0));
     };
     for (std::size_t v = 0; v < keys_.size(); ++v) {
       const Vec3& p = mesh_.vertices[v];
@@ -97,22 +98,35 @@ class Clustering {
 
   /// Groups the vertices by position.
   void group_by_position() {
-    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>, KeyHash> by_hash;
+    // The first vertex of each hash; the later ones of a hash, rare but for equal positions,
+    // in a list of their own (a welded mesh has none).
+    std::unordered_map<std::uint64_t, std::uint32_t, KeyHash> first_of_hash;
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>, KeyHash> more_of_hash;
+    first_of_hash.reserve(keys_.size());
     for (std::size_t v = 0; v < keys_.size(); ++v) {
       const Vec3& p = mesh_.vertices[v];
       // +0.0: the two zeros, which compare equal, hash alike.
       const std::uint64_t h =
           soup::DoublesHash{}(std::array<double, 3>{p.x + 0.0, p.y + 0.0, p.z + 0.0});
-      std::vector<std::uint32_t>& same_hash = by_hash[h];
       keys_[v] = v;
-      for (const std::uint32_t w : same_hash) {
+      const auto [first, inserted] = first_of_hash.emplace(h, static_cast<std::uint32_t>(v));
+      if (inserted) continue;
+      const auto same = [&](std::uint32_t w) {
         const Vec3& q = mesh_.vertices[w];
-        if (q.x == p.x && q.y == p.y && q.z == p.z) {
+        return q.x == p.x && q.y == p.y && q.z == p.z;
+      };
+      if (same(first->second)) {
+        keys_[v] = keys_[first->second];
+        continue;
+      }
+      std::vector<std::uint32_t>& more = more_of_hash[h];
+      for (const std::uint32_t w : more) {
+        if (same(w)) {
           keys_[v] = keys_[w];
           break;
         }
       }
-      if (keys_[v] == v) same_hash.push_back(static_cast<std::uint32_t>(v));
+      if (keys_[v] == v) more.push_back(static_cast<std::uint32_t>(v));
     }
   }
 
