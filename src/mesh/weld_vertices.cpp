@@ -51,11 +51,13 @@ class VertexTable {
     slots_.assign(capacity, Slot{});
   }
 
-  /// The vertex at `key`, or `next` (then inserted) when there is none.
+  /// Starts loading the slot where a key of this hash is looked for.
+  void prefetch(std::size_t hash) const { __builtin_prefetch(&slots_[hash & (slots_.size() - 1)]); }
+
+  /// The vertex at `key` (of hash `hash`), or `next` (then inserted) when there is none.
   /// @return (vertex, whether it was inserted)
-  std::pair<VertexIndex, bool> find_or_insert(const PointKey& key,
+  std::pair<VertexIndex, bool> find_or_insert(const PointKey& key, std::size_t hash,
                                               const std::vector<Vec3>& vertices, VertexIndex next) {
-    const std::size_t hash = PointKeyHash{}(key);
     const std::size_t mask = slots_.size() - 1;
     for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
       Slot& slot = slots_[i];
@@ -101,19 +103,33 @@ IndexedMesh weld_vertices(const TriangleSoup& soup) {
   mesh.vertices.reserve(soup.triangles.size() / 2 + 3);
   VertexTable index_of(soup.triangles.size() / 2 + 3);
 
-  for (const auto& triangle : soup.triangles) {
-    std::array<VertexIndex, 3> corners{};
-    for (int c = 0; c < 3; ++c) {
-      const auto [vertex, inserted] = index_of.find_or_insert(
-          key_of(triangle[c]), mesh.vertices, static_cast<VertexIndex>(mesh.vertices.size()));
-      if (inserted) {
-        STRATA_ASSERT(mesh.vertices.size() < std::numeric_limits<VertexIndex>::max(),
-                      "more distinct vertices than VertexIndex can number");
-        mesh.vertices.push_back(triangle[c]);
-      }
-      corners[c] = vertex;
+  // The table is larger than the caches: each corner's slot is fetched a few corners ahead.
+  constexpr std::size_t kAhead = 16;
+  const std::size_t corners = 3 * soup.triangles.size();
+  const auto corner = [&](std::size_t c) -> const Vec3& { return soup.triangles[c / 3][c % 3]; };
+  std::array<std::size_t, kAhead> hashes{};
+  for (std::size_t c = 0; c < std::min(kAhead, corners); ++c) {
+    hashes[c] = PointKeyHash{}(key_of(corner(c)));
+    index_of.prefetch(hashes[c]);
+  }
+  std::array<VertexIndex, 3> facet{};
+  for (std::size_t c = 0; c < corners; ++c) {
+    const std::size_t hash = hashes[c % kAhead];
+    if (c + kAhead < corners) {
+      const std::size_t later = PointKeyHash{}(key_of(corner(c + kAhead)));
+      hashes[c % kAhead] = later;
+      index_of.prefetch(later);
     }
-    mesh.triangles.push_back(corners);
+    const Vec3& p = corner(c);
+    const auto [vertex, inserted] = index_of.find_or_insert(
+        key_of(p), hash, mesh.vertices, static_cast<VertexIndex>(mesh.vertices.size()));
+    if (inserted) {
+      STRATA_ASSERT(mesh.vertices.size() < std::numeric_limits<VertexIndex>::max(),
+                    "more distinct vertices than VertexIndex can number");
+      mesh.vertices.push_back(p);
+    }
+    facet[c % 3] = vertex;
+    if (c % 3 == 2) mesh.triangles.push_back(facet);
   }
   return mesh;
 }
