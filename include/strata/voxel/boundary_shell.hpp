@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -27,7 +28,8 @@ using SolidLayerLookup = std::function<const std::uint8_t*(std::int64_t k)>;
 /// The mesh and grid must outlive the marker. classify() is safe to call from several threads.
 class BoundaryShell {
  public:
-  /// Prepares the marker of a shell `thickness_mm` thick (Distance mode: sorts the facets by z).
+  /// Prepares the marker of a shell `thickness_mm` thick (Distance mode: groups the facets into
+  /// patches of neighbours and sorts the patches by z).
   BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, ShellMode mode, double thickness_mm);
 
   /// How many layers on each side of k classify(k) reads.
@@ -48,6 +50,7 @@ class BoundaryShell {
     const Vec3* corner[3];
     std::int64_t i0, i1, j0, j1;
   };
+  /// The rows of a patch's box kept as bit words (a row's interior cells, 64 at most).
   static constexpr std::int64_t kMaxPatchRows = 64;
   /// The small facets of a patch, tested over the patch's box.
   void mark_near_small_facets(std::span<const FacetReach> facets, double z,
@@ -67,9 +70,10 @@ class BoundaryShell {
   std::uint32_t reach_ = 1;
   std::uint32_t rings_ = 1;
   bool unequal_sizes_ = false;
-  // Distance mode: the facets in patches of neighbours (their centroids in one cube of
-  // kPatchCells cells a side), the patches sorted by their lowest z with the running maximum of
-  // their highest z, so the patches within t of a plane are found by two binary searches.
+  // Distance mode: the facets in patches of neighbours (their centroids in one box of
+  // kPatchCells by kPatchCells cells by kPatchLayers layers), the patches sorted by their lowest z
+  // with the running maximum of their highest z, so the patches within t of a plane are found by
+  // two binary searches.
   static constexpr double kPatchCells = 16.0;
   static constexpr double kPatchLayers = 4.0;
   struct Patch {
