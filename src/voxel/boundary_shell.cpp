@@ -155,7 +155,7 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
   const std::size_t nf = mesh_.triangles.size();
   std::vector<double> zmin(nf);
   std::vector<double> zmax(nf);
-  std::vector<std::uint64_t> cube(nf);
+  std::vector<std::uint64_t> patch_key(nf);
   // Patches: the facets whose centroids share a box of kPatchCells cells by kPatchLayers layers,
   // counted from the mesh's lowest corner.
   const Vec3 low = mesh_.bounds().min;
@@ -176,21 +176,22 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
     const double cx = (a.x + b.x + c.x) / 3.0;
     const double cy = (a.y + b.y + c.y) / 3.0;
     const double cz = (a.z + b.z + c.z) / 3.0;
-    cube[f] = box_index(cz - low.z, patch_z) << 42 | box_index(cy - low.y, patch_y) << 21 |
-              box_index(cx - low.x, patch_x);
+    patch_key[f] = box_index(cz - low.z, patch_z) << 42 | box_index(cy - low.y, patch_y) << 21 |
+                   box_index(cx - low.x, patch_x);
   });
   std::vector<FacetIndex> facets_by_patch(nf);
   std::iota(facets_by_patch.begin(), facets_by_patch.end(), FacetIndex{0});
   // Ties by index, so that the parallel sort gives one order.
-  tbb::parallel_sort(
-      facets_by_patch.begin(), facets_by_patch.end(),
-      [&](FacetIndex a, FacetIndex b) { return cube[a] != cube[b] ? cube[a] < cube[b] : a < b; });
+  tbb::parallel_sort(facets_by_patch.begin(), facets_by_patch.end(),
+                     [&](FacetIndex a, FacetIndex b) {
+                       return patch_key[a] != patch_key[b] ? patch_key[a] < patch_key[b] : a < b;
+                     });
   std::vector<Patch> patches;
   for (std::size_t r = 0; r < nf;) {
     Patch patch{static_cast<std::uint32_t>(r), 0, zmin[facets_by_patch[r]],
                 zmax[facets_by_patch[r]]};
-    const std::uint64_t key = cube[facets_by_patch[r]];
-    for (; r < nf && cube[facets_by_patch[r]] == key; ++r) {
+    const std::uint64_t key = patch_key[facets_by_patch[r]];
+    for (; r < nf && patch_key[facets_by_patch[r]] == key; ++r) {
       patch.zmin = std::min(patch.zmin, zmin[facets_by_patch[r]]);
       patch.zmax = std::max(patch.zmax, zmax[facets_by_patch[r]]);
     }
