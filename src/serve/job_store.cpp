@@ -2,9 +2,14 @@
 #include <tbb/task_arena.h>
 
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
+#include <deque>
 #include <exception>
+#include <functional>
+#include <mutex>
 #include <nlohmann/json.hpp>
+#include <thread>
 #include <vector>
 
 #include "serve/job_store_internal.hpp"
@@ -17,8 +22,49 @@ namespace strata::serve::detail {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+/// The tasks, run one at a time in the order they were queued, on a thread of their own that
+/// joins the task arena: a queued task starts as soon as the one before ends, whether or not a
+/// TBB worker is free to take it (the process has one on two cores, which other work may hold),
+/// and the thread's slices use the arena's other slot too.
 struct JobStore::Pool {
   tbb::task_arena arena;
+  std::mutex mutex;
+  std::condition_variable ready;
+  std::deque<std::function<void()>> tasks;
+  bool stopping = false;
+  std::thread runner{[this] { run(); }};  // last: it starts with every other member built
+
+  ~Pool() {
+    {
+      std::lock_guard lock(mutex);
+      stopping = true;
+    }
+    ready.notify_all();
+    runner.join();
+  }
+
+  /// Queues a task; does not wait.
+  void post(std::function<void()> task) {
+    {
+      std::lock_guard lock(mutex);
+      tasks.push_back(std::move(task));
+    }
+    ready.notify_one();
+  }
+
+  void run() {
+    for (;;) {
+      std::function<void()> task;
+      {
+        std::unique_lock lock(mutex);
+        ready.wait(lock, [this] { return stopping || !tasks.empty(); });
+        if (tasks.empty()) return;  // stopping, every task run
+        task = std::move(tasks.front());
+        tasks.pop_front();
+      }
+      arena.execute(task);
+    }
+  }
 };
 
 namespace {
@@ -303,8 +349,8 @@ void JobStore::queue(const std::shared_ptr<Job>& job, TaskKind kind) {
                                              : job->validate;
     if (t.state == "none") t.state = "queued";
   }
-  // enqueue does not wait: the request threads never block on the pool.
-  pool_->arena.enqueue([this, job, kind] {
+  // post does not wait: the request threads never block on the pool.
+  pool_->post([this, job, kind] {
     execute(job, kind);
     std::lock_guard lock(mutex_);
     --tasks_in_flight_;

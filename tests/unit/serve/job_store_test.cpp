@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
+#include <atomic>
 #include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -64,6 +67,30 @@ TEST_F(JobStoreTest, AnUploadIsCheckedAndSlicedIntoItsFolder) {
   EXPECT_NE(*second, *id);
   EXPECT_EQ(wait_for(store, *second, "slice")["slice"]["state"], "done");
   EXPECT_EQ(json::parse(store.list_json())["jobs"].size(), 2u);
+}
+
+TEST_F(JobStoreTest, AQueuedCheckStartsWhileEveryTbbWorkerIsHeldElsewhere) {
+  // The tasks have a thread of their own: a check does not wait for a TBB worker, which other
+  // work in the process may hold for long (here until the check has ended).
+  JobStore store(root_, tasks_.runner());
+  const int slots = tbb::this_task_arena::max_concurrency();
+  std::atomic<int> held{0};
+  std::atomic<bool> release{false};
+  std::thread holder([&] {
+    tbb::parallel_for(0, slots, 1, [&](int) {
+      ++held;
+      while (!release) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    });
+  });
+  for (int n = 0; n < 2000 && held < slots; ++n) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  auto id = store.add_file(model_);
+  ASSERT_TRUE(id);
+  const json j = wait_for(store, *id, "check");
+  release = true;
+  holder.join();
+  EXPECT_EQ(j["check"]["state"], "done");
 }
 
 TEST_F(JobStoreTest, ACancelledSliceLeavesNoOutput) {
