@@ -27,28 +27,6 @@ std::int64_t floor_index(double x) {
   return static_cast<double>(i) > x ? i - 1 : i;
 }
 
-/// The indices i in [0, n) whose centre base + (i + 0.5) d, computed as the tests compute it,
-/// lies in [lo, hi] widened by 1e-12 of its ends: the formula's guess, moved to the exact ends by
-/// looking at the centres themselves. i0 > i1 when there is none.
-std::pair<std::int64_t, std::int64_t> centre_range(double base, double d, std::uint32_t n,
-                                                   double lo, double hi) {
-  const double pad = 1e-12 * std::max(std::fabs(lo), std::fabs(hi));
-  lo -= pad;
-  hi += pad;
-  const double count = static_cast<double>(n);
-  const auto centre = [&](std::int64_t i) { return base + (static_cast<double>(i) + 0.5) * d; };
-  // A first guess, then moved to the exact ends.
-  std::int64_t i0 =
-      std::max<std::int64_t>(0, ceil_index(std::clamp((lo - base) / d - 0.5, -1.0, count)));
-  std::int64_t i1 = floor_index(std::clamp((hi - base) / d - 0.5, -1.0, count - 1.0));
-  const auto last = static_cast<std::int64_t>(n) - 1;
-  while (i0 > 0 && centre(i0 - 1) >= lo) --i0;
-  while (i0 <= last && centre(i0) < lo) ++i0;
-  while (i1 < last && centre(i1 + 1) <= hi) ++i1;
-  while (i1 >= 0 && centre(i1) > hi) --i1;
-  return {i0, i1};
-}
-
 /// The cells along one axis of the grid: centre i at base + (i + 0.5) d, for i in [0, n).
 struct GridAxis {
   double base, d, inv_d;
@@ -56,13 +34,13 @@ struct GridAxis {
   GridAxis(double base_, double d_, std::uint32_t n_)
       : base(base_), d(d_), inv_d(1.0 / d_), n(n_) {}
 
-  /// The indices of the centres in [lo, hi], and perhaps one more at an end that a centre only
-  /// rounding away from the bound would leave out: the cells a facet may reach, for the exact
-  /// test to decide. By the formula alone, where centre_range() looks at the centres.
+  /// The indices of the centres in [lo, hi] widened by 1e-12 of its ends, and perhaps one more
+  /// at an end that a centre only rounding away from the bound would leave out: the cells a
+  /// facet may reach, for the exact test to decide. i0 > i1 when there is none.
   std::pair<std::int64_t, std::int64_t> cells_reaching(double lo, double hi) const {
     const double count = static_cast<double>(n);
     // The rounding of these few operations, relative to the magnitudes involved, and the
-    // 1e-12 of the bounds that centre_range() allows.
+    // 1e-12 of the bounds.
     const double pad =
         1e-9 + (2e-12 * std::max(std::fabs(lo), std::fabs(hi)) + 1e-14 * std::fabs(base)) * inv_d;
     const std::int64_t i0 = std::max<std::int64_t>(
@@ -250,7 +228,6 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
   const std::size_t begin =
       std::lower_bound(zmax_prefix_max_.begin(), zmax_prefix_max_.begin() + end, z_lo) -
       zmax_prefix_max_.begin();
-  const double inv_dx = 1.0 / grid_.dx;
   const GridAxis x_axis(grid_.x0, grid_.dx, grid_.nx);
   const GridAxis y_axis(grid_.y0, grid_.dy, grid_.ny);
   constexpr double kNarrowFromCells = 8.0;
@@ -281,7 +258,7 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
       // Small facets are tested together, cell by cell over the patch's box (below): a cell
       // is visited once for the patch rather than once for each of its facets. Narrowing a row
       // to the stretch near the facet pays only on wide facets.
-      if ((box[2] - box[0]) * inv_dx < kNarrowFromCells) {
+      if ((box[2] - box[0]) * x_axis.inv_d < kNarrowFromCells) {
         small.push_back({{&a, &b, &c}, i0_box, i1_box, j0, j1});
         continue;
       }
@@ -377,6 +354,7 @@ void BoundaryShell::mark_near_wide_facet(const Vec3& a, const Vec3& b, const Vec
   const double t = thickness_mm_;
   const std::uint32_t nx = grid_.nx;
   const detail::TriangleDistanceFilter filter(a, b, c, t);
+  const GridAxis x_axis(grid_.x0, grid_.dx, grid_.nx);
   detail::TriangleDistanceFilter::RowBound bounds[detail::TriangleDistanceFilter::kMaxRowBounds];
   const int bound_count =
       filter.row_bounds(z, box[1] - grow, box[3] + grow, box[0] - grow, box[2] + grow, bounds);
@@ -386,7 +364,7 @@ void BoundaryShell::mark_near_wide_facet(const Vec3& a, const Vec3& b, const Vec
     double x_hi = box[2] + grow;
     for (int q = 0; q < bound_count; ++q) bounds[q].clip(yc, x_lo, x_hi);
     if (!(x_lo <= x_hi)) continue;
-    const auto [row_i0, row_i1] = centre_range(grid_.x0, grid_.dx, grid_.nx, x_lo, x_hi);
+    const auto [row_i0, row_i1] = x_axis.cells_reaching(x_lo, x_hi);
     const std::int64_t i0 = std::max(i0_box, row_i0);
     const std::int64_t i1 = std::min(i1_box, row_i1);
     CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
