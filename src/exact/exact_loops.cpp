@@ -55,9 +55,9 @@ struct Box {
   double x_min, y_min, x_max, y_max;
 };
 
-/// +1 strictly inside (nonzero winding), 0 on the boundary, -1 outside. Exact.
-int point_in_loop(const ExactPoint2& p, const Point& pk, const std::vector<ExactPoint2>& loop,
-                  const std::vector<Point>& loop_k) {
+/// +1 strictly inside (nonzero winding), 0 on the boundary, -1 outside. Exact. Only the edges
+/// that straddle p's row become kernel points: a few of the loop's, whatever its length.
+int point_in_loop(const ExactPoint2& p, const Point& pk, const std::vector<ExactPoint2>& loop) {
   int winding = 0;
   const auto cmp_y = [](const ExactPoint2& a, const ExactPoint2& b) {
     if (a.y.rounded != b.y.rounded) return a.y.rounded < b.y.rounded ? -1 : 1;
@@ -69,7 +69,7 @@ int point_in_loop(const ExactPoint2& p, const Point& pk, const std::vector<Exact
     const int by = cmp_y(loop[k], p);
     if (ay <= 0) {
       if (by > 0) {
-        const CGAL::Orientation o = CGAL::orientation(loop_k[i], loop_k[k], pk);
+        const CGAL::Orientation o = CGAL::orientation(to_kernel(loop[i]), to_kernel(loop[k]), pk);
         if (o == CGAL::COLLINEAR) return 0;
         if (o == CGAL::LEFT_TURN) ++winding;
       } else if (ay == 0 && by == 0) {
@@ -78,7 +78,7 @@ int point_in_loop(const ExactPoint2& p, const Point& pk, const std::vector<Exact
         if (ax == 0 || bx == 0 || ax != bx) return 0;
       }
     } else if (by <= 0) {
-      const CGAL::Orientation o = CGAL::orientation(loop_k[i], loop_k[k], pk);
+      const CGAL::Orientation o = CGAL::orientation(to_kernel(loop[i]), to_kernel(loop[k]), pk);
       if (o == CGAL::COLLINEAR) return 0;
       if (o == CGAL::RIGHT_TURN) --winding;
     }
@@ -139,7 +139,6 @@ LayerContours finish_contours(std::uint32_t layer, double z_mm, std::vector<Exac
   // Depth: loops of one layer may touch or (overlapping shells) cross, so the probe is a point
   // inside an edge, and a probe on another loop counts as outside it. Rounding to nearest is
   // monotone, so the rounded boxes are a safe first test.
-  std::vector<std::optional<std::vector<Point>>> kernel_points(loops.size());
   for (const std::size_t i : closed) {
     const ExactPoint2 probe = probe_of(loops[i].points);
     const Point2 pr = probe.rounded();
@@ -149,13 +148,8 @@ LayerContours finish_contours(std::uint32_t layer, double z_mm, std::vector<Exac
       if (i == j) continue;
       const Box& b = boxes[j];
       if (pr.x < b.x_min || pr.x > b.x_max || pr.y < b.y_min || pr.y > b.y_max) continue;
-      if (!kernel_points[j]) {
-        kernel_points[j].emplace();
-        kernel_points[j]->reserve(loops[j].points.size());
-        for (const ExactPoint2& p : loops[j].points) kernel_points[j]->push_back(to_kernel(p));
-      }
       if (!probe_k) probe_k = to_kernel(probe);
-      if (point_in_loop(probe, *probe_k, loops[j].points, *kernel_points[j]) > 0) ++depth;
+      if (point_in_loop(probe, *probe_k, loops[j].points) > 0) ++depth;
     }
     out.loops[i].depth = depth;
   }
