@@ -150,7 +150,7 @@ ArrangementContours arrangement_contours(const ExactLayer& layer, FillRule rule,
   std::vector<WeightedSegment> segments;
   segments.reserve(layer.segments.size());
   for (const ExactSegment& s : layer.segments) {
-    if (!s.zero_length) segments.push_back({s.start, s.end, 1});
+    if (!s.zero_length) segments.push_back({layer.start_of(s), layer.end_of(s), 1});
   }
   if (segments.empty()) return result;
   result.open_chains = close_open_chains(segments, left_of);

@@ -214,8 +214,8 @@ LayerFill fill_layer(const IndexedMesh& mesh, const ExactLayer& layer, const Gri
   RowCrossings row_crossings;
   for (const ExactSegment& s : layer.segments) {
     if (s.zero_length) continue;
-    const std::uint32_t rows_start = rows_at_or_below(s.start.y);
-    const std::uint32_t rows_end = rows_at_or_below(s.end.y);
+    const std::uint32_t rows_start = rows_at_or_below(layer.start_of(s).y);
+    const std::uint32_t rows_end = rows_at_or_below(layer.end_of(s).y);
     if (rows_start == rows_end) continue;
     // Rows [first, last) have exactly one end point strictly below their scanline.
     const std::uint32_t first = std::min(rows_start, rows_end);

@@ -43,10 +43,8 @@ class ExactPointGeometry {
  public:
   explicit ExactPointGeometry(const ExactLayer& layer) : layer_(layer) {
     double largest = 0.0;
-    for (const ExactSegment& s : layer.segments) {
-      for (const ExactPoint2* p : {&s.start, &s.end}) {
-        largest = std::max({largest, std::fabs(p->x.rounded), std::fabs(p->y.rounded)});
-      }
+    for (const ExactPoint2& p : layer.points) {
+      largest = std::max({largest, std::fabs(p.x.rounded), std::fabs(p.y.rounded)});
     }
     // Rounded to nearest: |rounded - exact| <= 2^-53 |rounded| for normal values, 2^-1075 below.
     margin_ = largest * 0x1p-52 + 0x1p-1000;
@@ -81,7 +79,7 @@ class ExactPointGeometry {
   }
   const ExactPoint2& point(strata::detail::SegmentEnd p) const {
     const ExactSegment& s = layer_.segments[p.segment];
-    return p.end == 0 ? s.start : s.end;
+    return p.end == 0 ? layer_.start_of(s) : layer_.end_of(s);
   }
 
   const ExactLayer& layer_;
@@ -166,7 +164,7 @@ LayerGeometry ExactKernel::compute_layer(std::uint32_t k) const {
   }
   std::sort(candidates.begin(), candidates.end());
   const double z = grid_.zk(k);
-  const ExactLayer layer = cut_layer(mesh_, candidates, normal_x_signs_, k, z);
+  ExactLayer layer = cut_layer(mesh_, candidates, normal_x_signs_, k, z);
 
   LayerGeometry geometry;
   geometry.segments = static_cast<std::uint32_t>(layer.segments.size());

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "exact/exact_rounding.hpp"
@@ -36,6 +37,18 @@ struct RoundedRational {
 
   RoundedRational() = default;
   explicit RoundedRational(Rational q) : exact(std::move(q)), rounded(round_to_double(exact)) {}
+  RoundedRational(const RoundedRational&) = default;
+  RoundedRational& operator=(const RoundedRational&) = default;
+  // gmpxx's rational move allocates a fresh denominator and is not noexcept, so vectors of
+  // exact points would copy both rationals on every growth; GMP aborts rather than throws when
+  // an allocation fails, so the move cannot throw.
+  RoundedRational(RoundedRational&& other) noexcept
+      : exact(std::move(other.exact)), rounded(other.rounded) {}
+  RoundedRational& operator=(RoundedRational&& other) noexcept {
+    exact.swap(other.exact);
+    rounded = other.rounded;
+    return *this;
+  }
 };
 
 /// Sign of (q - d), exact.
@@ -54,13 +67,14 @@ int compare_xy(const ExactPoint2& a, const ExactPoint2& b);
 
 /// The piece of one facet in a cutting plane (SPEC §2, layer_segments.hpp): from the crossing on
 /// the edge that goes down through the plane to the crossing on the edge that goes up, in the
-/// facet's own vertex order, so the material lies on its left. Points are exact.
+/// facet's own vertex order, so the material lies on its left. Points are exact, held once per
+/// crossed edge by the layer (two facets share each crossing of a closed surface).
 struct ExactSegment {
   FacetIndex facet = 0;
   CrossedEdge start_edge;
   CrossedEdge end_edge;
-  ExactPoint2 start;
-  ExactPoint2 end;
+  std::uint32_t start = 0;  ///< index of the start point in ExactLayer::points
+  std::uint32_t end = 0;    ///< index of the end point in ExactLayer::points
   /// Sign of the x component of the facet normal (b - a) x (c - a), exact.
   int normal_x_sign = 0;
   /// Start and end are the same point (the facet meets the plane in one point).
@@ -71,7 +85,11 @@ struct ExactSegment {
 struct ExactLayer {
   std::uint32_t layer = 0;
   double z_mm = 0.0;
+  std::vector<ExactPoint2> points;  ///< one per crossed edge
   std::vector<ExactSegment> segments;
+
+  const ExactPoint2& start_of(const ExactSegment& s) const { return points[s.start]; }
+  const ExactPoint2& end_of(const ExactSegment& s) const { return points[s.end]; }
 };
 
 /// A contour before rounding: exact points, no repeated closing point.

@@ -183,7 +183,7 @@ SoupMesh::~SoupMesh() = default;
 
 const ExactSliceReport& SoupMesh::repair_report() const { return impl_->report; }
 
-std::optional<std::vector<ExactLoop>> SoupMesh::chain_layer(const ExactLayer& layer) const {
+std::optional<std::vector<ExactLoop>> SoupMesh::chain_layer(ExactLayer& layer) const {
   const Impl& d = *impl_;
   if (!d.usable) return std::nullopt;
   const auto& segments = layer.segments;
@@ -224,8 +224,15 @@ std::optional<std::vector<ExactLoop>> SoupMesh::chain_layer(const ExactLayer& la
     active[s] = true;
   }
 
-  // Segments are in facet order: find a facet's segment by binary search.
-  const auto segment_of = [&](std::uint32_t facet) -> std::size_t {
+  // The segment that follows another starts where it ends, at the same crossed edge's point:
+  // found by that point first, by the facet (segments are in facet order) where a point starts
+  // several segments.
+  std::vector<std::uint32_t> starting_at(layer.points.size(), kNone);
+  for (std::size_t s = 0; s < n; ++s)
+    starting_at[segments[s].start] = static_cast<std::uint32_t>(s);
+  const auto segment_of = [&](std::uint32_t facet, std::uint32_t point) -> std::size_t {
+    const std::uint32_t s = starting_at[point];
+    if (s != kNone && segments[s].facet == facet) return s;
     const auto it =
         std::lower_bound(segments.begin(), segments.end(), facet,
                          [](const ExactSegment& seg, std::uint32_t f) { return seg.facet < f; });
@@ -233,27 +240,44 @@ std::optional<std::vector<ExactLoop>> SoupMesh::chain_layer(const ExactLayer& la
     return static_cast<std::size_t>(it - segments.begin());
   };
 
+  // The loops are first found as point indices, so that nothing is taken from the layer unless
+  // every chain closes.
   std::vector<bool> used(n, false);
-  std::vector<ExactLoop> loops;
+  std::vector<std::vector<std::uint32_t>> loop_points;
+  std::vector<std::uint32_t> uses(layer.points.size(), 0);
   for (std::size_t seed = 0; seed < n; ++seed) {
     if (!active[seed] || used[seed]) continue;
-    ExactLoop loop;
+    std::vector<std::uint32_t> loop;
     std::size_t current = seed;
     while (true) {
       used[current] = true;
-      loop.points.push_back(segments[current].start);
+      loop.push_back(segments[current].start);
+      ++uses[segments[current].start];
       const Mesh::Halfedge_index across = d.mesh.opposite(end_h[current]);
       const Mesh::Face_index next_face = d.mesh.face(across);
       if (next_face == Mesh::null_face()) return std::nullopt;  // a border: the chain is open
       const std::uint32_t facet = d.face_facet[next_face];
       if (facet == kNone) return std::nullopt;
-      const std::size_t next = segment_of(facet);
+      const std::size_t next = segment_of(facet, segments[current].end);
       if (next == kInactive || !active[next] || start_h[next] != across) return std::nullopt;
       if (next == seed) break;
       if (used[next]) return std::nullopt;
       current = next;
     }
-    loops.push_back(std::move(loop));
+    loop_points.push_back(std::move(loop));
+  }
+  // A point is moved at its last use and copied before (a point starts two segments only where
+  // the input's facets meet along an edge in the same direction).
+  std::vector<ExactLoop> loops(loop_points.size());
+  for (std::size_t l = 0; l < loop_points.size(); ++l) {
+    loops[l].points.reserve(loop_points[l].size());
+    for (const std::uint32_t p : loop_points[l]) {
+      if (--uses[p] == 0) {
+        loops[l].points.push_back(std::move(layer.points[p]));
+      } else {
+        loops[l].points.push_back(layer.points[p]);
+      }
+    }
   }
   return loops;
 }

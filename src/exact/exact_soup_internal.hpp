@@ -36,12 +36,13 @@ class SoupMesh {
   const ExactSliceReport& repair_report() const;
 
   /// Chains one layer's segments into closed loops by walking the halfedge structure face to face
-  /// across the crossed edges. A loop's points are its segments' start points, in order.
+  /// across the crossed edges. A loop's points are its segments' start points, in order, moved
+  /// out of `layer.points` (the layer's points are then spent; its segments are unchanged).
   /// @return nullopt when the soup is not a polygon mesh, a chain reaches a border, a facet of
   ///         the layer is not in the mesh (removed by the repair) or two neighbouring facets'
-  ///         directions disagree: the caller then uses the arrangement.
-  /// Safe to call from several threads.
-  std::optional<std::vector<ExactLoop>> chain_layer(const ExactLayer& layer) const;
+  ///         directions disagree: the caller then uses the arrangement, and `layer` is as it was.
+  /// Safe to call from several threads, each with its own layer.
+  std::optional<std::vector<ExactLoop>> chain_layer(ExactLayer& layer) const;
 
  private:
   struct Impl;
