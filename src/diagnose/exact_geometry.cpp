@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "diagnose/fixed_width_integer.hpp"
 #include "strata/core/error.hpp"
 
 namespace strata::diagnose::detail {
@@ -64,6 +65,111 @@ double round_to_double(const mpz_class& sum, int scale_exponent) {
   return d;
 }
 
+// Coordinates as integers over 2^min_exponent. With at most 62 bits, a minor (a difference of
+// two products) takes under 2^125 and a facet's determinant under 2^189: one limb a coordinate,
+// two a minor, four a sum over 2^32 facets. With at most 100 bits: two, four and seven.
+constexpr int kMaxBitsOneLimb = 62;
+constexpr int kMaxBitsTwoLimbs = 100;
+
+template <std::size_t L>
+SignedLimbs<L> scaled_coordinate(const Dyadic& d, int min_exponent) {
+  SignedLimbs<L> out;
+  out.negative = d.mantissa < 0;
+  const std::uint64_t m = static_cast<std::uint64_t>(std::llabs(d.mantissa));
+  const int shift = d.exponent - min_exponent;
+  const int limb = shift / 64;
+  const int bit = shift % 64;
+  out.magnitude[static_cast<std::size_t>(limb)] = m << bit;
+  if (bit > 0 && static_cast<std::size_t>(limb) + 1 < L) {
+    out.magnitude[static_cast<std::size_t>(limb) + 1] = m >> (64 - bit);
+  }
+  return out;
+}
+
+/// The sum of every group's determinants a · (b x c), on integers of L limbs a coordinate.
+/// @pre every scaled coordinate fits the bounds above for L.
+template <std::size_t L>
+std::vector<mpz_class> sum_determinants(const IndexedMesh& mesh, const std::vector<Dyadic>& dyadic,
+                                        int min_exponent,
+                                        const std::vector<std::uint32_t>& group_of_facet,
+                                        std::size_t num_groups, std::size_t parts) {
+  constexpr std::size_t kSum = 3 * L + 1;
+  std::vector<SignedLimbs<L>> coord(dyadic.size());
+  for (std::size_t i = 0; i < dyadic.size(); ++i) {
+    if (dyadic[i].mantissa != 0) coord[i] = scaled_coordinate<L>(dyadic[i], min_exponent);
+  }
+  const std::size_t nf = mesh.triangles.size();
+  std::vector<std::vector<Limbs<kSum>>> part_sums(parts, std::vector<Limbs<kSum>>(num_groups));
+  tbb::parallel_for(std::size_t{0}, parts, [&](std::size_t part) {
+    std::vector<Limbs<kSum>>& sums = part_sums[part];
+    for (std::size_t f = nf * part / parts; f < nf * (part + 1) / parts; ++f) {
+      const auto& t = mesh.triangles[f];
+      const SignedLimbs<L>* a = &coord[3 * static_cast<std::size_t>(t[0])];
+      const SignedLimbs<L>* b = &coord[3 * static_cast<std::size_t>(t[1])];
+      const SignedLimbs<L>* c = &coord[3 * static_cast<std::size_t>(t[2])];
+      Limbs<kSum>& sum = sums[group_of_facet[f]];
+      add_product(sum, a[0], cross_difference(b[1], c[2], b[2], c[1]));
+      add_product(sum, a[1], cross_difference(b[2], c[0], b[0], c[2]));
+      add_product(sum, a[2], cross_difference(b[0], c[1], b[1], c[0]));
+    }
+  });
+  std::vector<mpz_class> out(num_groups);
+  for (std::size_t g = 0; g < num_groups; ++g) {
+    Limbs<kSum> total{};
+    for (std::size_t part = 0; part < parts; ++part) add_to(total, part_sums[part][g]);
+    const SignedLimbs<kSum> v = sign_and_magnitude(total);
+    mpz_import(out[g].get_mpz_t(), kSum, -1, sizeof(std::uint64_t), 0, 0, v.magnitude.data());
+    if (v.negative) out[g] = -out[g];
+  }
+  return out;
+}
+
+/// sum_determinants on GMP's integers, for coordinates of any width.
+std::vector<mpz_class> sum_determinants_gmp(const IndexedMesh& mesh,
+                                            const std::vector<Dyadic>& dyadic, int min_exponent,
+                                            const std::vector<std::uint32_t>& group_of_facet,
+                                            std::size_t num_groups, std::size_t parts) {
+  const std::size_t nv3 = dyadic.size();
+  std::vector<mpz_class> coord(nv3);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv3, 4096), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i < range.end(); ++i) {
+      const Dyadic& d = dyadic[i];
+      if (d.mantissa == 0) continue;
+      coord[i] = static_cast<long>(d.mantissa);
+      mpz_mul_2exp(coord[i].get_mpz_t(), coord[i].get_mpz_t(),
+                   static_cast<mp_bitcnt_t>(d.exponent - min_exponent));
+    }
+  });
+  const std::size_t nf = mesh.triangles.size();
+  std::vector<std::vector<mpz_class>> part_sums(parts, std::vector<mpz_class>(num_groups));
+  tbb::parallel_for(std::size_t{0}, parts, [&](std::size_t part) {
+    std::vector<mpz_class>& sums = part_sums[part];
+    mpz_class minor, det;
+    for (std::size_t f = nf * part / parts; f < nf * (part + 1) / parts; ++f) {
+      const auto& t = mesh.triangles[f];
+      const mpz_class* a = &coord[3 * static_cast<std::size_t>(t[0])];
+      const mpz_class* b = &coord[3 * static_cast<std::size_t>(t[1])];
+      const mpz_class* c = &coord[3 * static_cast<std::size_t>(t[2])];
+      // det = a · (b x c)
+      mpz_mul(minor.get_mpz_t(), b[1].get_mpz_t(), c[2].get_mpz_t());
+      mpz_submul(minor.get_mpz_t(), b[2].get_mpz_t(), c[1].get_mpz_t());
+      mpz_mul(det.get_mpz_t(), a[0].get_mpz_t(), minor.get_mpz_t());
+      mpz_mul(minor.get_mpz_t(), b[2].get_mpz_t(), c[0].get_mpz_t());
+      mpz_submul(minor.get_mpz_t(), b[0].get_mpz_t(), c[2].get_mpz_t());
+      mpz_addmul(det.get_mpz_t(), a[1].get_mpz_t(), minor.get_mpz_t());
+      mpz_mul(minor.get_mpz_t(), b[0].get_mpz_t(), c[1].get_mpz_t());
+      mpz_submul(minor.get_mpz_t(), b[1].get_mpz_t(), c[0].get_mpz_t());
+      mpz_addmul(det.get_mpz_t(), a[2].get_mpz_t(), minor.get_mpz_t());
+      sums[group_of_facet[f]] += det;
+    }
+  });
+  std::vector<mpz_class>& sums = part_sums[0];
+  for (std::size_t part = 1; part < parts; ++part) {
+    for (std::size_t g = 0; g < num_groups; ++g) sums[g] += part_sums[part][g];
+  }
+  return std::move(sums);
+}
+
 }  // namespace
 
 bool is_collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -111,17 +217,6 @@ ExactVolumes exact_signed_volumes(const IndexedMesh& mesh,
   result.by_group_mm3.assign(num_groups, 0.0);
   if (min_exponent == INT_MAX) return result;  // every coordinate is zero
 
-  std::vector<mpz_class> coord(3 * nv);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, 3 * nv, 4096), [&](const auto& range) {
-    for (std::size_t i = range.begin(); i < range.end(); ++i) {
-      const Dyadic& d = dyadic[i];
-      if (d.mantissa == 0) continue;
-      coord[i] = static_cast<long>(d.mantissa);
-      mpz_mul_2exp(coord[i].get_mpz_t(), coord[i].get_mpz_t(),
-                   static_cast<mp_bitcnt_t>(d.exponent - min_exponent));
-    }
-  });
-
   // The facets are cut into parts summed on their own; integer sums do not depend on the
   // order. A part holds a sum for every group, so many groups (a soup of loose facets) make
   // one part.
@@ -130,31 +225,25 @@ ExactVolumes exact_signed_volumes(const IndexedMesh& mesh,
   constexpr std::size_t kMinFacetsAPart = 16384;
   const std::size_t parts =
       num_groups > 64 ? 1 : std::clamp<std::size_t>(nf / kMinFacetsAPart, 1, kMaxParts);
-  std::vector<std::vector<mpz_class>> part_sums(parts, std::vector<mpz_class>(num_groups));
-  tbb::parallel_for(std::size_t{0}, parts, [&](std::size_t part) {
-    std::vector<mpz_class>& sums = part_sums[part];
-    mpz_class minor, det;
-    for (std::size_t f = nf * part / parts; f < nf * (part + 1) / parts; ++f) {
-      const auto& t = mesh.triangles[f];
-      const mpz_class* a = &coord[3 * static_cast<std::size_t>(t[0])];
-      const mpz_class* b = &coord[3 * static_cast<std::size_t>(t[1])];
-      const mpz_class* c = &coord[3 * static_cast<std::size_t>(t[2])];
-      // det = a · (b x c)
-      mpz_mul(minor.get_mpz_t(), b[1].get_mpz_t(), c[2].get_mpz_t());
-      mpz_submul(minor.get_mpz_t(), b[2].get_mpz_t(), c[1].get_mpz_t());
-      mpz_mul(det.get_mpz_t(), a[0].get_mpz_t(), minor.get_mpz_t());
-      mpz_mul(minor.get_mpz_t(), b[2].get_mpz_t(), c[0].get_mpz_t());
-      mpz_submul(minor.get_mpz_t(), b[0].get_mpz_t(), c[2].get_mpz_t());
-      mpz_addmul(det.get_mpz_t(), a[1].get_mpz_t(), minor.get_mpz_t());
-      mpz_mul(minor.get_mpz_t(), b[0].get_mpz_t(), c[1].get_mpz_t());
-      mpz_submul(minor.get_mpz_t(), b[1].get_mpz_t(), c[0].get_mpz_t());
-      mpz_addmul(det.get_mpz_t(), a[2].get_mpz_t(), minor.get_mpz_t());
-      sums[group_of_facet[f]] += det;
-    }
-  });
-  std::vector<mpz_class>& sums = part_sums[0];
-  for (std::size_t part = 1; part < parts; ++part) {
-    for (std::size_t g = 0; g < num_groups; ++g) sums[g] += part_sums[part][g];
+
+  // The scaled coordinates' widths pick the arithmetic: one or two limbs while the products of
+  // three and their sum over every facet fit in a few limbs (the usual case: a model's
+  // coordinates span a few powers of ten), GMP's integers otherwise.
+  int widest = 0;
+  for (const Dyadic& d : dyadic) {
+    if (d.mantissa == 0) continue;
+    const int bits =
+        static_cast<int>(std::bit_width(static_cast<std::uint64_t>(std::llabs(d.mantissa)))) +
+        (d.exponent - min_exponent);
+    widest = std::max(widest, bits);
+  }
+  std::vector<mpz_class> sums;
+  if (widest <= kMaxBitsOneLimb) {
+    sums = sum_determinants<1>(mesh, dyadic, min_exponent, group_of_facet, num_groups, parts);
+  } else if (widest <= kMaxBitsTwoLimbs) {
+    sums = sum_determinants<2>(mesh, dyadic, min_exponent, group_of_facet, num_groups, parts);
+  } else {
+    sums = sum_determinants_gmp(mesh, dyadic, min_exponent, group_of_facet, num_groups, parts);
   }
   mpz_class total;
   const int scale = 3 * min_exponent;

@@ -1,8 +1,12 @@
 #include "diagnose/exact_geometry.hpp"
 
+#include <gmpxx.h>
 #include <gtest/gtest.h>
+#include <mpfr.h>
 
+#include <cmath>
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include "support/mesh_builders.hpp"
@@ -93,6 +97,68 @@ TEST(ExactSignedVolumes, SumsManyFacetsInPartsAsExactlyAsInOne) {
   const ExactVolumes cubes = exact_signed_volumes(mesh, cube_groups, 3000);
   EXPECT_EQ(cubes.by_group_mm3, std::vector<double>(3000, 1.0));
   EXPECT_EQ(cubes.total_mm3, 3000.0);
+}
+
+/// The nearest double to q (ties to even), by MPFR: the definition of one rounding.
+double nearest_double(const mpq_class& q) {
+  mpfr_t r;
+  mpfr_init2(r, 53);
+  mpfr_set_q(r, q.get_mpq_t(), MPFR_RNDN);
+  const double d = mpfr_get_d(r, MPFR_RNDN);
+  mpfr_clear(r);
+  return d;
+}
+
+/// Random facets whose coordinates are m 2^e, |m| < 2^53, e in [-spread, spread]: the spread sets
+/// how wide the coordinates are on one common exponent, and so which arithmetic sums them (one
+/// limb up to 62 bits, two up to 100, GMP's integers beyond).
+IndexedMesh random_facets(int spread, std::uint32_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<std::int64_t> mantissa(-(std::int64_t{1} << 53) + 1,
+                                                       (std::int64_t{1} << 53) - 1);
+  std::uniform_int_distribution<int> exponent(-spread, spread);
+  IndexedMesh mesh;
+  for (int v = 0; v < 600; ++v) {
+    Vec3 p;
+    for (double* c : {&p.x, &p.y, &p.z}) {
+      *c = std::ldexp(static_cast<double>(mantissa(rng)), exponent(rng) - 26);
+    }
+    if (v % 50 == 7) p.y = 0.0;  // zero coordinates are left out of the common exponent
+    mesh.vertices.push_back(p);
+  }
+  std::uniform_int_distribution<VertexIndex> vertex(0, 599);
+  for (int f = 0; f < 40000; ++f) mesh.triangles.push_back({vertex(rng), vertex(rng), vertex(rng)});
+  return mesh;
+}
+
+TEST(ExactSignedVolumes, EveryArithmeticSumsAsRationalsDo) {
+  // spread 2: at most 57 bits (one limb); 20: up to 93 (two limbs); 40: up to 133 (GMP).
+  for (const int spread : {2, 20, 40}) {
+    {
+      const auto seed = static_cast<std::uint32_t>(spread);
+      const IndexedMesh mesh = random_facets(spread, seed);
+      const std::size_t nf = mesh.triangles.size();
+      std::vector<std::uint32_t> group(nf);
+      std::vector<mpq_class> expected(3);
+      for (std::size_t f = 0; f < nf; ++f) {
+        group[f] = static_cast<std::uint32_t>((f * 7 + seed) % 3);
+        const Vec3& a = mesh.vertices[mesh.triangles[f][0]];
+        const Vec3& b = mesh.vertices[mesh.triangles[f][1]];
+        const Vec3& c = mesh.vertices[mesh.triangles[f][2]];
+        expected[group[f]] += mpq_class(a.x) * (mpq_class(b.y) * c.z - mpq_class(b.z) * c.y) +
+                              mpq_class(a.y) * (mpq_class(b.z) * c.x - mpq_class(b.x) * c.z) +
+                              mpq_class(a.z) * (mpq_class(b.x) * c.y - mpq_class(b.y) * c.x);
+      }
+      const ExactVolumes v = exact_signed_volumes(mesh, group, 3);
+      mpq_class total;
+      for (std::size_t g = 0; g < 3; ++g) {
+        EXPECT_EQ(v.by_group_mm3[g], nearest_double(expected[g] / 6))
+            << "spread " << spread << " seed " << seed << " group " << g;
+        total += expected[g];
+      }
+      EXPECT_EQ(v.total_mm3, nearest_double(total / 6)) << "spread " << spread;
+    }
+  }
 }
 
 }  // namespace
