@@ -1,6 +1,7 @@
 #include "cli/slice_command.hpp"
 
 #include <fmt/format.h>
+#include <malloc.h>
 #include <tbb/global_control.h>
 #include <unistd.h>
 
@@ -243,6 +244,10 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   out.mesh_report.num_input_facets = input_facets;
   m.soup.stored_normals.clear();
   m.soup.stored_normals.shrink_to_fit();
+  // What reading and diagnosing freed goes back to the system before the slicing allocates: a
+  // block freed on a worker thread stays in that thread's heap otherwise, and the run's peak
+  // would depend on which thread happened to free what (up to 17 MB more on a 200k-facet model).
+  malloc_trim(0);
   if (cancelled()) return cancel_error;
 
   Result<SliceSummary> summary = Error{ErrorCode::Internal, "not run", {}};
