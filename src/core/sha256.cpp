@@ -122,11 +122,9 @@ __attribute__((target("sha,sse4.1"))) void compress_sha_extensions(std::uint32_t
 bool has_sha_extensions() {
   unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
   if (__get_cpuid(1, &eax, &ebx, &ecx, &edx) == 0) return false;
-  const bool ssse3 = (ecx & (1U << 9)) != 0;
-  const bool sse41 = (ecx & (1U << 19)) != 0;
+  const unsigned leaf1_ecx = ecx;
   if (__get_cpuid_count(7, 0, &eax, &ebx, &ecx, &edx) == 0) return false;
-  const bool sha = (ebx & (1U << 29)) != 0;
-  return ssse3 && sse41 && sha;
+  return Sha256::extensions_usable(leaf1_ecx, ebx);
 }
 #endif
 
@@ -187,6 +185,13 @@ std::string Sha256::hex_digest() const {
     fmt::format_to(std::back_inserter(out), "{:08x}", word);
   }
   return out;
+}
+
+bool Sha256::extensions_usable(std::uint32_t leaf1_ecx, std::uint32_t leaf7_ebx) {
+  const bool ssse3 = (leaf1_ecx & (1U << 9)) != 0;
+  const bool sse41 = (leaf1_ecx & (1U << 19)) != 0;
+  const bool sha = (leaf7_ebx & (1U << 29)) != 0;
+  return ssse3 && sse41 && sha;
 }
 
 bool Sha256::uses_processor_extensions() { return chosen_compress() != compress_portable; }

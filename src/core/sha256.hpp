@@ -22,6 +22,9 @@ class Sha256 {
   /// Whether whole blocks go to the processor's SHA instructions (x86-64 with the SHA
   /// extensions) rather than the plain C++ rounds.
   static bool uses_processor_extensions();
+  /// Whether the processor's SHA rounds can be used, from CPUID leaf 1's ECX (SSSE3, bit 9;
+  /// SSE4.1, bit 19) and leaf 7's EBX (SHA, bit 29): all three are needed.
+  static bool extensions_usable(std::uint32_t leaf1_ecx, std::uint32_t leaf7_ebx);
   /// The digest of `bytes` by the plain C++ rounds alone, whatever the processor: for tests.
   static std::string portable_hex_digest(std::string_view bytes);
 

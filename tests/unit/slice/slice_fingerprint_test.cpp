@@ -70,6 +70,16 @@ TEST(Sha256, AgreesWithThePlainRoundsOnEveryLengthAndSplit) {
   RecordProperty("processor_extensions", detail::Sha256::uses_processor_extensions() ? 1 : 0);
 }
 
+TEST(Sha256, TakesTheProcessorRoundsOnlyWithSsse3Sse41AndSha) {
+  constexpr std::uint32_t kSsse3 = 1U << 9, kSse41 = 1U << 19, kSha = 1U << 29;
+  EXPECT_TRUE(detail::Sha256::extensions_usable(kSsse3 | kSse41, kSha));
+  EXPECT_TRUE(detail::Sha256::extensions_usable(~0U, ~0U));
+  EXPECT_FALSE(detail::Sha256::extensions_usable(kSse41, kSha)) << "no SSSE3";
+  EXPECT_FALSE(detail::Sha256::extensions_usable(kSsse3, kSha)) << "no SSE4.1";
+  EXPECT_FALSE(detail::Sha256::extensions_usable(kSsse3 | kSse41, ~kSha)) << "no SHA";
+  EXPECT_FALSE(detail::Sha256::extensions_usable(0, 0));
+}
+
 TEST(SliceFingerprint, ChangesWithTheModelBytesAndTheCellOptions) {
   test::TempDir dir;
   const auto a = test::write_text_file(dir / "a.stl", "solid a\nendsolid a\n");
