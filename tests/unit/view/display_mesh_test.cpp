@@ -8,6 +8,7 @@
 #include <cmath>
 #include <set>
 
+#include "strata/core/thousands.hpp"
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
 
@@ -174,6 +175,46 @@ TEST(MakeDisplayMesh, LeavesOutTheFacetsClusteringFoldsOver) {
     area += 0.5 * twice_area;
   }
   EXPECT_NEAR(area, kSide * kSide, 0.02 * kSide * kSide) << "the sheet, without holes to speak of";
+}
+
+TEST(MakeDisplayMesh, DrawsNothingOfAModelWithoutAFiniteExtent) {
+  // Clustering searches cube sizes between fractions of the model's extent: with a coordinate
+  // that is not a number, or an extent beyond the doubles, there is no size to search, and the
+  // picture is empty rather than wrong. A NaN position is never merged with another, not even
+  // with itself.
+  const double nan = std::nan("");
+  for (const Vec3& odd : {Vec3{nan, 0, 0}, Vec3{0, nan, 0}, Vec3{0, 0, nan}, Vec3{1e308, 0, 0}}) {
+    IndexedMesh mesh;
+    mesh.vertices = {odd, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1e308, 1, 1}, odd};
+    mesh.triangles = {{0, 1, 2}, {5, 2, 3}, {0, 3, 1}, {5, 1, 4}, {1, 2, 4}};
+    const DisplayMesh d = make_display_mesh(mesh, 1, 1);
+    EXPECT_TRUE(d.simplified);
+    EXPECT_EQ(d.facets_in_model, 5u);
+    EXPECT_EQ(d.facets(), 0u);
+    EXPECT_TRUE(d.positions.empty());
+  }
+}
+
+TEST(MakeNotedDisplayMesh, SaysWhenAndHowMuchThePictureWasSimplified) {
+  const IndexedMesh sphere = weld_vertices(mesh::make_sphere(10.0, 3));
+  ASSERT_GT(sphere.triangles.size(), 1000u);
+  const NotedDisplayMesh whole = make_noted_display_mesh(
+      sphere, sphere.triangles.size(), SliceStage::Sliced, CountDigits::GroupedByThousands);
+  EXPECT_FALSE(whole.note.has_value());
+  const NotedDisplayMesh before =
+      make_noted_display_mesh(sphere, 200, SliceStage::NotSlicedYet, CountDigits::Plain);
+  ASSERT_TRUE(before.note.has_value());
+  EXPECT_EQ(*before.note, "display mesh simplified from " +
+                              std::to_string(sphere.triangles.size()) + " to " +
+                              std::to_string(before.mesh.facets()) +
+                              " facets for the browser; slicing uses every facet");
+  const NotedDisplayMesh after =
+      make_noted_display_mesh(sphere, 200, SliceStage::Sliced, CountDigits::GroupedByThousands);
+  ASSERT_TRUE(after.note.has_value());
+  EXPECT_EQ(*after.note, "display mesh simplified from " + with_thousands(sphere.triangles.size()) +
+                             " to " + std::to_string(after.mesh.facets()) +
+                             " facets for the browser; slicing used every facet");
+  EXPECT_NE(with_thousands(sphere.triangles.size()), std::to_string(sphere.triangles.size()));
 }
 
 }  // namespace

@@ -154,6 +154,30 @@ TEST(ViewStackCollector, KeepsTheSameWhetherLayersArePreparedAheadOrNot) {
   }
 }
 
+TEST(ViewStackCollector, AddsALayerPreparedForAnotherOrNotAtAllAsItComes) {
+  // A prepared layer that is missing or belongs to another layer is not used: the layer is
+  // taken as it comes, and the stack is the one the plain run keeps.
+  const auto layers = io::testing::small_layers();
+  ASSERT_GE(layers.size(), 2u);
+  ViewStackCollector as_they_come;
+  ASSERT_TRUE(io::testing::run_sink(as_they_come, io::testing::small_run(), layers));
+  ViewStackCollector mismatched;
+  ASSERT_TRUE(mismatched.begin(io::testing::small_run()));
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    // Layer 0 gets no prepared layer; every other layer gets the previous layer's.
+    std::unique_ptr<PreparedLayer> other =
+        i == 0 ? nullptr : mismatched.prepare_layer(layers[i - 1].result());
+    ASSERT_TRUE(mismatched.add_prepared_layer(layers[i].result(), std::move(other)));
+  }
+  ASSERT_TRUE(mismatched.finish());
+  const ViewStack a = as_they_come.take();
+  const ViewStack b = mismatched.take();
+  EXPECT_EQ(b.stored, a.stored);
+  EXPECT_EQ(b.cells_zlib, a.cells_zlib);
+  EXPECT_EQ(b.volume.blocks, a.volume.blocks);
+  EXPECT_EQ(b.hatches, a.hatches);
+}
+
 TEST(ViewStackCollector, KeepsTheScanlinesAsSegmentsAtTheRowCentres) {
   ViewStackCollector sink;
   feed(sink, run_on(5, 3, 1), 2);
