@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <numeric>
 #include <optional>
 
@@ -50,6 +51,57 @@ struct GridAxis {
     return {i0, i1};
   }
 };
+
+/// A slab across a unit direction n that holds a set of triangles: every point q of them has
+/// lo <= n · q <= hi. A point p with n · p outside [lo - t, hi + t] is farther than t from each
+/// of them (|n · (p - q)| <= |p - q|), whatever their shape.
+struct Slab {
+  Vec3 n{0, 0, 0};
+  double lo = 0.0, hi = 0.0;
+  bool usable = false;
+};
+
+/// The slab of a patch's facets across their area-weighted mean normal, widened by a margin far
+/// above the rounding of these sums and of the row arithmetic that uses it (1e-9 of the largest
+/// coordinate), so that it leaves out only points the exact test would reject. Unusable when the
+/// normals cancel out (a thin sheet seen from both sides).
+template <class Facets>
+Slab slab_of(const Facets& facets) {
+  Vec3 sum{0, 0, 0};
+  double scale = 0.0;
+  for (const auto& f : facets) {
+    const Vec3& a = *f.corner[0];
+    const Vec3& b = *f.corner[1];
+    const Vec3& c = *f.corner[2];
+    const Vec3 u{b.x - a.x, b.y - a.y, b.z - a.z};
+    const Vec3 v{c.x - a.x, c.y - a.y, c.z - a.z};
+    sum = {sum.x + (u.y * v.z - u.z * v.y), sum.y + (u.z * v.x - u.x * v.z),
+           sum.z + (u.x * v.y - u.y * v.x)};
+    for (const Vec3* p : f.corner) {
+      scale = std::max({scale, std::fabs(p->x), std::fabs(p->y), std::fabs(p->z)});
+    }
+  }
+  Slab out;
+  const double length = std::sqrt(sum.x * sum.x + sum.y * sum.y + sum.z * sum.z);
+  if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(scale)) return out;
+  out.n = {sum.x / length, sum.y / length, sum.z / length};
+  out.lo = std::numeric_limits<double>::infinity();
+  out.hi = -std::numeric_limits<double>::infinity();
+  for (const auto& f : facets) {
+    for (const Vec3* p : f.corner) {
+      const double s = out.n.x * p->x + out.n.y * p->y + out.n.z * p->z;
+      out.lo = std::min(out.lo, s);
+      out.hi = std::max(out.hi, s);
+    }
+  }
+  // The computed n is unit to a few ulps, and each dot product is off by a few ulps of the
+  // coordinates' scale: 1e-9 of it covers both with room to spare.
+  const double margin = 1e-9 * (scale + 1.0);
+  out.lo -= margin;
+  out.hi += margin;
+  out.usable = true;
+  return out;
+}
 
 /// The x-y bounding box of the part of triangle abc within z in [z_lo, z_hi]; false if none.
 bool slab_footprint(const Vec3& a, const Vec3& b, const Vec3& c, double z_lo, double z_hi,
@@ -315,6 +367,43 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, d
       bits |= static_cast<std::uint64_t>(row[i] == CellClass::Interior) << (i - pi0);
     }
     interior[r] = bits;
+  }
+  // Cells beyond the slab of the patch's facets, widened by t, are farther than t from each of
+  // them: most of the patch's box past the shell, which no facet then tests.
+  const Slab slab = slab_of(facets);
+  if (slab.usable) {
+    const double lo = slab.lo - t;
+    const double hi = slab.hi + t;
+    const GridAxis x_axis(grid_.x0, grid_.dx, grid_.nx);
+    for (std::int64_t r = 0; r < rows; ++r) {
+      if (interior[r] == 0) continue;
+      const double yc = grid_.yc(static_cast<std::uint32_t>(pj0 + r));
+      // n · p = n.x x + rest along the row.
+      const double rest = slab.n.y * yc + slab.n.z * z;
+      const double rest_error = 1e-9 * (std::fabs(yc) + std::fabs(z) + 1.0);
+      std::int64_t i0 = pi0;
+      std::int64_t i1 = pi1;
+      if (std::fabs(slab.n.x) < 1e-6) {
+        // Nearly across the row: the row is in the slab or not as a whole (|n.x x| adds at most
+        // 1e-6 of the coordinates, inside the bound below).
+        const double spread = 1e-6 * (std::fabs(grid_.xc(static_cast<std::uint32_t>(pi0))) +
+                                      std::fabs(grid_.xc(static_cast<std::uint32_t>(pi1))));
+        if (rest + spread + rest_error < lo || rest - spread - rest_error > hi) i1 = i0 - 1;
+      } else {
+        double x_lo = (lo - rest_error - rest) / slab.n.x;
+        double x_hi = (hi + rest_error - rest) / slab.n.x;
+        if (x_lo > x_hi) std::swap(x_lo, x_hi);
+        const auto [a0, a1] = x_axis.cells_reaching(x_lo, x_hi);
+        i0 = std::max(i0, a0);
+        i1 = std::min(i1, a1);
+      }
+      std::uint64_t keep = 0;
+      if (i0 <= i1) {
+        const std::int64_t span = i1 - i0 + 1;
+        keep = (span >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << span) - 1) << (i0 - pi0);
+      }
+      interior[r] &= keep;
+    }
   }
   for (const FacetReach& facet : facets) {
     filter.reset();
