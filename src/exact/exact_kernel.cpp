@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
@@ -113,13 +114,20 @@ Result<void> check_mesh_for_exact(const IndexedMesh& mesh) {
 
 ExactKernel::ExactKernel(const IndexedMesh& mesh, const GridSpec& grid, const SliceOptions& options,
                          ContourMethod method)
-    : mesh_(mesh),
-      grid_(grid),
-      options_(options),
-      method_(method),
-      soup_(std::make_unique<SoupMesh>(mesh)),
-      normal_x_signs_(facet_normal_x_signs(mesh)) {
+    : mesh_(mesh), grid_(grid), options_(options), method_(method) {
+  // The halfedge structure (its own sorts run in parallel) is built beside the facets' normals
+  // and layers: with two threads, the one of them that would otherwise wait.
+  tbb::parallel_invoke([&] { soup_ = std::make_unique<SoupMesh>(mesh); },
+                       [&] {
+                         normal_x_signs_ = facet_normal_x_signs(mesh);
+                         index_facets_by_layer();
+                       });
+}
+
+void ExactKernel::index_facets_by_layer() {
   // Facet f crosses layer k iff zmin(f) < zk <= zmax(f) (a vertex on the plane is above it).
+  const IndexedMesh& mesh = mesh_;
+  const GridSpec& grid = grid_;
   const std::size_t n = mesh.triangles.size();
   first_layer_.resize(n);
   last_layer_.resize(n);

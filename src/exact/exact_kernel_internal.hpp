@@ -47,6 +47,9 @@ class ExactKernel final : public LayerKernel {
   ExactSliceReport report() const;
 
  private:
+  /// Fills first_layer_, last_layer_ and the facets' buckets by first layer.
+  void index_facets_by_layer();
+
   const IndexedMesh& mesh_;
   GridSpec grid_;
   SliceOptions options_;
