@@ -71,11 +71,9 @@ class BinaryCellsWriter final : public detail::SingleFileSink {
     for (std::size_t base = 0; base < n; base += 4 * kChunkBytes) {
       const std::span<const CellClass> part =
           cells.subspan(base, std::min(4 * kChunkBytes, n - base));
-      for (std::size_t idx = 0; idx < part.size(); ++idx) {
-        const auto code = static_cast<unsigned>(part[idx]);
-        if (code == 0b10 || code > 0b11) {
-          return reserved_code_error(layer.layer, base + idx, run().grid.nx, part[idx]);
-        }
+      const std::size_t bad = first_unstorable_cell(part);
+      if (bad < part.size()) {
+        return reserved_code_error(layer.layer, base + bad, run().grid.nx, part[bad]);
       }
       chunk.clear();
       append_packed_cells(part, chunk);

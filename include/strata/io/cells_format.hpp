@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -41,8 +42,12 @@ inline std::uint64_t binary_cells_file_bytes(const GridSpec& grid) {
 }
 
 /// Appends `cells` to `out` packed as the binary encoding stores a layer: 4 cells a byte, the
-/// first in the two most significant bits, the last byte padded with zero bits. The codes are
-/// packed as they are: checking them (no reserved 10) is the caller's.
+/// first in the two most significant bits, the last byte padded with zero bits. Each code's two
+/// low bits are packed as they are: checking the codes (first_unstorable_cell) is the caller's.
 void append_packed_cells(std::span<const CellClass> cells, std::string& out);
+
+/// The index of the first cell whose code the binary encoding cannot store (the reserved 10, or
+/// a value above 11), or cells.size() when every code is 00, 01 or 11.
+std::size_t first_unstorable_cell(std::span<const CellClass> cells);
 
 }  // namespace strata::io

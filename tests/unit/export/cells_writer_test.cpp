@@ -2,11 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstring>
 #include <filesystem>
+#include <random>
 #include <string>
 #include <vector>
 
+#include "strata/io/cells_format.hpp"
 #include "strata/io/read_cells.hpp"
 #include "support/sink_runs.hpp"
 #include "support/text_meshes.hpp"
@@ -158,6 +161,40 @@ TEST(CellsWriter, WrongCellCountIsAnInternalError) {
   auto added = sink->add_layer(layers[0].result());
   ASSERT_FALSE(added);
   EXPECT_EQ(added.error().code, ErrorCode::Internal);
+}
+
+TEST(PackedCells, AreTheFourCellsABytePackingOfEveryLengthAndMix) {
+  // Against the encoding written out: cell c of a byte in bits 7-2c and 6-2c, the last byte
+  // padded with zero bits; every length from 0 to 67 cells, random codes 00, 01 and 11.
+  std::mt19937 rng(7);
+  for (std::size_t n = 0; n < 68; ++n) {
+    for (int round = 0; round < 20; ++round) {
+      std::vector<CellClass> cells(n);
+      for (CellClass& c : cells) c = code(std::array<unsigned, 3>{0, 1, 3}[rng() % 3]);
+      std::string expected((n + 3) / 4, '\0');
+      for (std::size_t i = 0; i < n; ++i) {
+        expected[i / 4] = static_cast<char>(static_cast<unsigned char>(expected[i / 4]) |
+                                            static_cast<unsigned>(cells[i]) << (6 - 2 * (i % 4)));
+      }
+      std::string packed = "head";
+      append_packed_cells(cells, packed);
+      ASSERT_EQ(packed, "head" + expected) << n << " cells";
+      EXPECT_EQ(first_unstorable_cell(cells), n);
+    }
+  }
+}
+
+TEST(PackedCells, FindTheFirstCodeTheEncodingCannotStoreWherever) {
+  for (std::size_t n = 1; n < 40; ++n) {
+    for (std::size_t at = 0; at < n; ++at) {
+      for (const unsigned bad : {2U, 4U, 6U, 0x80U, 0xFFU}) {
+        std::vector<CellClass> cells(n, code(3));
+        cells[at] = code(bad);
+        if (at + 1 < n) cells[n - 1] = code(2);  // a later one is not the first
+        ASSERT_EQ(first_unstorable_cell(cells), at) << n << " cells, code " << bad << " at " << at;
+      }
+    }
+  }
 }
 
 TEST(CellsWriter, ReservedCodeIsAnInternalError) {
