@@ -89,94 +89,106 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
   std::vector<Point3> points;
   points.reserve(input.vertices.size());
   for (const Vec3& v : input.vertices) points.emplace_back(v.x, v.y, v.z);
-  std::vector<Polygon> polygons;
-  polygons.reserve(input.triangles.size());
-  for (const auto& t : input.triangles) polygons.push_back({t[0], t[1], t[2]});
+
+  // What follows the repair, on either kind of polygon list.
+  const auto finish = [&](auto& polygons, bool clean) {
+    d.report.points_merged = input.vertices.size() - points.size();
+    d.report.polygons_removed = input.triangles.size() - polygons.size();
+
+    // A clean soup that is already a polygon mesh has every shared edge used both ways and no
+    // singular vertex: CGAL's orientation would reverse, split and report nothing, so it is not
+    // run.
+    const bool already_mesh =
+        clean && !polygons.empty() && soup::is_polygon_mesh(polygons, points.size());
+    const soup::OrientSoupCounts counters =
+        already_mesh ? soup::OrientSoupCounts{} : soup::orient_soup(points, polygons);
+    d.report.points_duplicated = counters.points_added;
+    d.report.polygons_reversed = counters.reversed;
+    d.report.non_manifold_edges = counters.non_manifold_edges.size();
+
+    // Orientation reverses and splits, but neither drops nor reorders polygons: checked.
+    const bool facet_order = clean && polygons.size() == input.triangles.size();
+    d.facet_face.assign(input.triangles.size(), kNone);
+    // CGAL's own check (PMP::is_polygon_soup_a_polygon_mesh) gives the same answer with a tree
+    // node per halfedge: the largest allocation of the exact path.
+    if (polygons.empty() || !(already_mesh || soup::is_polygon_mesh(polygons, points.size()))) {
+      return;
+    }
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, d.mesh);
+    // The conversion adds vertex i for point i and face i for polygon i; check it did.
+    if (d.mesh.number_of_vertices() != points.size() ||
+        d.mesh.number_of_faces() != polygons.size()) {
+      return;
+    }
+    d.vertex_position.resize(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) d.vertex_position[i] = to_vec3(points[i]);
+
+    // Input facets by corner positions; a position set shared by several facets (duplicates,
+    // unwelded copies) maps to none of them. Held as (hash of the positions, facet), sorted, and
+    // the positions compared again on a match: 16 bytes a facet, not a hash map node of 96.
+    const auto key_of_facet = [&](std::uint32_t f) {
+      const auto& t = input.triangles[f];
+      return soup::position_key({input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]});
+    };
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> by_hash(
+        facet_order ? 0 : input.triangles.size());
+    for (std::size_t f = 0; f < by_hash.size(); ++f) {
+      const auto facet = static_cast<std::uint32_t>(f);
+      by_hash[f] = {soup::DoublesHash{}(key_of_facet(facet)), facet};
+    }
+    std::sort(by_hash.begin(), by_hash.end());
+    const auto facet_at = [&](const soup::PositionKey& k) {
+      const std::uint64_t h = soup::DoublesHash{}(k);
+      std::uint32_t found = kNone;
+      for (auto it = std::lower_bound(by_hash.begin(), by_hash.end(), std::make_pair(h, 0u));
+           it != by_hash.end() && it->first == h; ++it) {
+        if (key_of_facet(it->second) != k) continue;
+        if (found != kNone) return kNone;  // shared
+        found = it->second;
+      }
+      return found;
+    };
+    d.face_facet.assign(polygons.size(), kNone);
+    for (std::size_t i = 0; i < polygons.size(); ++i) {
+      const auto& p = polygons[i];
+      const Mesh::Face_index face(static_cast<Mesh::size_type>(i));
+      std::size_t corners = 0;
+      bool matches = p.size() == 3;
+      for (const Mesh::Vertex_index v : d.mesh.vertices_around_face(d.mesh.halfedge(face))) {
+        matches = matches && std::find(p.begin(), p.end(), static_cast<std::size_t>(v)) != p.end();
+        ++corners;
+      }
+      if (!matches || corners != 3) return;  // not the face of polygon i: no halfedge path at all
+      const std::uint32_t facet =
+          facet_order
+              ? static_cast<std::uint32_t>(i)
+              : facet_at(soup::position_key(
+                    {d.vertex_position[p[0]], d.vertex_position[p[1]], d.vertex_position[p[2]]}));
+      if (facet == kNone) continue;
+      d.face_facet[i] = facet;
+      d.facet_face[facet] = static_cast<std::uint32_t>(i);
+    }
+    d.usable = true;
+    d.report.polygon_mesh = true;
+  };
 
   // A clean soup (the usual one: welded, no facet with a repeated corner, none twice) is one
   // CGAL's repair would only take its unused points from; the facets then keep their indices,
-  // and face i of the mesh is input facet i.
-  const bool clean = is_clean_soup(input);
-  if (clean) {
+  // and face i of the mesh is input facet i. Its triangles stay triangles: held as arrays, not
+  // as a heap list each (56 MB less for a million facets).
+  if (is_clean_soup(input)) {
+    std::vector<std::array<std::size_t, 3>> polygons;
+    polygons.reserve(input.triangles.size());
+    for (const auto& t : input.triangles) polygons.push_back({t[0], t[1], t[2]});
     PMP::remove_isolated_points_in_polygon_soup(points, polygons);
+    finish(polygons, true);
   } else {
+    std::vector<Polygon> polygons;
+    polygons.reserve(input.triangles.size());
+    for (const auto& t : input.triangles) polygons.push_back({t[0], t[1], t[2]});
     PMP::repair_polygon_soup(points, polygons);
+    finish(polygons, false);
   }
-  d.report.points_merged = input.vertices.size() - points.size();
-  d.report.polygons_removed = input.triangles.size() - polygons.size();
-
-  // A clean soup that is already a polygon mesh has every shared edge used both ways and no
-  // singular vertex: CGAL's orientation would reverse, split and report nothing, so it is not run.
-  const bool already_mesh =
-      clean && !polygons.empty() && soup::is_polygon_mesh(polygons, points.size());
-  const soup::OrientSoupCounts counters =
-      already_mesh ? soup::OrientSoupCounts{} : soup::orient_soup(points, polygons);
-  d.report.points_duplicated = counters.points_added;
-  d.report.polygons_reversed = counters.reversed;
-  d.report.non_manifold_edges = counters.non_manifold_edges.size();
-
-  // Orientation reverses and splits, but neither drops nor reorders polygons: checked.
-  const bool facet_order = clean && polygons.size() == input.triangles.size();
-  d.facet_face.assign(input.triangles.size(), kNone);
-  // CGAL's own check (PMP::is_polygon_soup_a_polygon_mesh) gives the same answer with a tree
-  // node per halfedge: the largest allocation of the exact path.
-  if (polygons.empty() || !(already_mesh || soup::is_polygon_mesh(polygons, points.size()))) {
-    return;
-  }
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, d.mesh);
-  // The conversion adds vertex i for point i and face i for polygon i; check it did.
-  if (d.mesh.number_of_vertices() != points.size() || d.mesh.number_of_faces() != polygons.size()) {
-    return;
-  }
-  d.vertex_position.resize(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) d.vertex_position[i] = to_vec3(points[i]);
-
-  // Input facets by corner positions; a position set shared by several facets (duplicates,
-  // unwelded copies) maps to none of them. Held as (hash of the positions, facet), sorted, and
-  // the positions compared again on a match: 16 bytes a facet, not a hash map node of 96.
-  const auto key_of_facet = [&](std::uint32_t f) {
-    const auto& t = input.triangles[f];
-    return soup::position_key({input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]});
-  };
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> by_hash(
-      facet_order ? 0 : input.triangles.size());
-  for (std::size_t f = 0; f < by_hash.size(); ++f) {
-    const auto facet = static_cast<std::uint32_t>(f);
-    by_hash[f] = {soup::DoublesHash{}(key_of_facet(facet)), facet};
-  }
-  std::sort(by_hash.begin(), by_hash.end());
-  const auto facet_at = [&](const soup::PositionKey& k) {
-    const std::uint64_t h = soup::DoublesHash{}(k);
-    std::uint32_t found = kNone;
-    for (auto it = std::lower_bound(by_hash.begin(), by_hash.end(), std::make_pair(h, 0u));
-         it != by_hash.end() && it->first == h; ++it) {
-      if (key_of_facet(it->second) != k) continue;
-      if (found != kNone) return kNone;  // shared
-      found = it->second;
-    }
-    return found;
-  };
-  d.face_facet.assign(polygons.size(), kNone);
-  for (std::size_t i = 0; i < polygons.size(); ++i) {
-    const Polygon& p = polygons[i];
-    const Mesh::Face_index face(static_cast<Mesh::size_type>(i));
-    std::size_t corners = 0;
-    bool matches = p.size() == 3;
-    for (const Mesh::Vertex_index v : d.mesh.vertices_around_face(d.mesh.halfedge(face))) {
-      matches = matches && std::find(p.begin(), p.end(), static_cast<std::size_t>(v)) != p.end();
-      ++corners;
-    }
-    if (!matches || corners != 3) return;  // not the face of polygon i: no halfedge path at all
-    const std::uint32_t facet =
-        facet_order ? static_cast<std::uint32_t>(i)
-                    : facet_at(soup::position_key({d.vertex_position[p[0]], d.vertex_position[p[1]],
-                                                   d.vertex_position[p[2]]}));
-    if (facet == kNone) continue;
-    d.face_facet[i] = facet;
-    d.facet_face[facet] = static_cast<std::uint32_t>(i);
-  }
-  d.usable = true;
-  d.report.polygon_mesh = true;
 }
 
 SoupMesh::~SoupMesh() = default;
