@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -77,11 +78,17 @@ class Clustering {
     for (const Vec3& v : mesh.vertices) {
       lo_ = {std::min(lo_.x, v.x), std::min(lo_.y, v.y), std::min(lo_.z, v.z)};
       hi_ = {std::max(hi_.x, v.x), std::max(hi_.y, v.y), std::max(hi_.z, v.z)};
+      finite_ = finite_ && std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
     }
     keys_.resize(mesh.vertices.size());
   }
 
-  double extent() const { return std::max({hi_.x - lo_.x, hi_.y - lo_.y, hi_.z - lo_.z}); }
+  /// The largest side of the vertices' box; not finite when a coordinate is not (there are then
+  /// no cubes to group by).
+  double extent() const {
+    if (!finite_) return std::numeric_limits<double>::quiet_NaN();
+    return std::max({hi_.x - lo_.x, hi_.y - lo_.y, hi_.z - lo_.z});
+  }
 
   /// Groups the vertices by cubes of side `cell` (> 0; at most 2^20 cubes an axis).
   void group_by_cell(double cell) {
@@ -192,6 +199,7 @@ class Clustering {
  private:
   const IndexedMesh& mesh_;
   Vec3 lo_, hi_;
+  bool finite_ = true;
   std::vector<std::uint64_t> keys_;
 };
 
