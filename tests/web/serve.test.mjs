@@ -80,6 +80,22 @@ async function upload(page, file) {
   await page.setInputFiles('[data-testid="model-file"]', file);
 }
 
+/**
+ * Uploads a model and waits until the app has selected its new job and checked it; the job's id.
+ * The app opens on the last job of the tests before, whose verdict is already on the page: a
+ * verdict alone does not tell that the upload's job is the one shown.
+ */
+async function uploadChecked(page, file) {
+  const before = await page.evaluate(() => window.strataServe.selected());
+  await upload(page, file);
+  await page.waitForFunction((previous) => {
+    const job = window.strataServe.job();
+    return job !== null && job.id !== previous && job.check.state === 'done';
+  }, before);
+  await page.waitForSelector('[data-testid="verdict"]');
+  return page.evaluate(() => window.strataServe.selected());
+}
+
 async function setOptions(page, options) {
   for (const [key, value] of Object.entries(options)) {
     await page.fill(`[data-testid="option-${key}"]`, String(value));
@@ -116,8 +132,7 @@ describe('strata serve', { skip: cli ? false : 'STRATA_CLI is not set' }, () => 
 
   test('a model from data/ is uploaded, checked, sliced with a shell thickness; its cells file is the CLI\'s, byte for byte', async () => {
     const { context, page, errors } = await openApp();
-    await upload(page, ring);
-    await page.waitForSelector('[data-testid="verdict"]');
+    await uploadChecked(page, ring);
     assert.match(await page.textContent('[data-testid="model-info"]'), /ring\.stl/);
     const options = { layer: 0.5, cell: 0.5, shell: 1.25 };
     await setOptions(page, options);
@@ -180,9 +195,7 @@ describe('strata serve', { skip: cli ? false : 'STRATA_CLI is not set' }, () => 
 
   test('once checked, before any slice, the model and its defects are drawn in 3D', { skip: existsSync(defective) ? false : `${defective} is missing` }, async () => {
     const { context, page } = await openApp();
-    await upload(page, defective);
-    await page.waitForSelector('[data-testid="verdict"]');
-    const id = await page.evaluate(() => window.strataServe.selected());
+    const id = await uploadChecked(page, defective);
     const frame = await viewerFrame(page, id, false);
     assert.match(await frame.textContent('#model-meta'), /not sliced yet/);
     const legend = await frame.textContent('#legend-3d');
@@ -237,8 +250,7 @@ describe('strata serve', { skip: cli ? false : 'STRATA_CLI is not set' }, () => 
 
   test('a long job is cancelled mid-way and leaves no output', async () => {
     const { context, page } = await openApp();
-    await upload(page, ring);
-    await page.waitForSelector('[data-testid="verdict"]');
+    await uploadChecked(page, ring);
     // Many cheap layers (10000 of 200 x 200 cells, a shell that reaches 10 layers): under the
     // sanitizers the first ones come within a second or two, the whole job takes a minute or more.
     // (800 x 800 cells a layer and a shell reaching 25 layers once took over 2 minutes to the
