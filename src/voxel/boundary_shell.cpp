@@ -11,6 +11,10 @@
 #include <numeric>
 #include <optional>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "voxel/triangle_distance_filter_internal.hpp"
 
 namespace strata {
@@ -26,6 +30,35 @@ std::int64_t ceil_index(double x) {
 std::int64_t floor_index(double x) {
   const auto i = static_cast<std::int64_t>(x);
   return static_cast<double>(i) > x ? i - 1 : i;
+}
+
+/// The lowest n bits set, n in [0, 64].
+std::uint64_t low_bits(std::size_t n) {
+  return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
+}
+
+/// Bit i set when cells[i] is Interior, for i < 64 and i < available (the cells there are).
+std::uint64_t interior_bits(const CellClass* cells, std::size_t available) {
+  const auto* codes = reinterpret_cast<const std::uint8_t*>(cells);
+  const auto interior = static_cast<std::uint8_t>(CellClass::Interior);
+#if defined(__SSE2__)
+  if (available >= 64) {
+    // Sixteen cells a compare, their bits gathered by one movemask.
+    const __m128i want = _mm_set1_epi8(static_cast<char>(interior));
+    std::uint64_t bits = 0;
+    for (int q = 0; q < 4; ++q) {
+      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(codes + 16 * q));
+      const auto mask = static_cast<std::uint32_t>(_mm_movemask_epi8(_mm_cmpeq_epi8(v, want)));
+      bits |= static_cast<std::uint64_t>(mask) << (16 * q);
+    }
+    return bits;
+  }
+#endif
+  std::uint64_t bits = 0;
+  for (std::size_t i = 0; i < std::min<std::size_t>(available, 64); ++i) {
+    bits |= static_cast<std::uint64_t>(codes[i] == interior) << i;
+  }
+  return bits;
 }
 
 /// The cells along one axis of the grid: centre i at base + (i + 0.5) d, for i in [0, n).
@@ -50,58 +83,15 @@ struct GridAxis {
         floor_index(std::clamp((hi - base) * inv_d - 0.5 + pad, -1.0, count - 1.0));
     return {i0, i1};
   }
-};
 
-/// A slab across a unit direction n that holds a set of triangles: every point q of them has
-/// lo <= n · q <= hi. A point p with n · p outside [lo - t, hi + t] is farther than t from each
-/// of them (|n · (p - q)| <= |p - q|), whatever their shape.
-struct Slab {
-  Vec3 n{0, 0, 0};
-  double lo = 0.0, hi = 0.0;
-  bool usable = false;
+  /// The indices of the centres in [lo, hi], to the rounding of a few operations: a guess for
+  /// a caller that checks what it takes (a centre it misses is left to the exact test).
+  std::pair<std::int64_t, std::int64_t> centres_within(double lo, double hi) const {
+    const double last = static_cast<double>(n) - 1.0;
+    return {ceil_index(std::clamp((lo - base) * inv_d - 0.5, 0.0, last + 1.0)),
+            floor_index(std::clamp((hi - base) * inv_d - 0.5, -1.0, last))};
+  }
 };
-
-/// The slab of a patch's facets across their area-weighted mean normal, widened by a margin far
-/// above the rounding of these sums and of the row arithmetic that uses it (1e-9 of the largest
-/// coordinate), so that it leaves out only points the exact test would reject. Unusable when the
-/// normals cancel out (a thin sheet seen from both sides).
-template <class Facets>
-Slab slab_of(const Facets& facets) {
-  Vec3 sum{0, 0, 0};
-  double scale = 0.0;
-  for (const auto& f : facets) {
-    const Vec3& a = *f.corner[0];
-    const Vec3& b = *f.corner[1];
-    const Vec3& c = *f.corner[2];
-    const Vec3 u{b.x - a.x, b.y - a.y, b.z - a.z};
-    const Vec3 v{c.x - a.x, c.y - a.y, c.z - a.z};
-    sum = {sum.x + (u.y * v.z - u.z * v.y), sum.y + (u.z * v.x - u.x * v.z),
-           sum.z + (u.x * v.y - u.y * v.x)};
-    for (const Vec3* p : f.corner) {
-      scale = std::max({scale, std::fabs(p->x), std::fabs(p->y), std::fabs(p->z)});
-    }
-  }
-  Slab out;
-  const double length = std::sqrt(sum.x * sum.x + sum.y * sum.y + sum.z * sum.z);
-  if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(scale)) return out;
-  out.n = {sum.x / length, sum.y / length, sum.z / length};
-  out.lo = std::numeric_limits<double>::infinity();
-  out.hi = -std::numeric_limits<double>::infinity();
-  for (const auto& f : facets) {
-    for (const Vec3* p : f.corner) {
-      const double s = out.n.x * p->x + out.n.y * p->y + out.n.z * p->z;
-      out.lo = std::min(out.lo, s);
-      out.hi = std::max(out.hi, s);
-    }
-  }
-  // The computed n is unit to a few ulps, and each dot product is off by a few ulps of the
-  // coordinates' scale: 1e-9 of it covers both with room to spare.
-  const double margin = 1e-9 * (scale + 1.0);
-  out.lo -= margin;
-  out.hi += margin;
-  out.usable = true;
-  return out;
-}
 
 /// The x-y bounding box of the part of triangle abc within z in [z_lo, z_hi]; false if none.
 bool slab_footprint(const Vec3& a, const Vec3& b, const Vec3& c, double z_lo, double z_hi,
@@ -169,18 +159,61 @@ void first_ring(const std::uint8_t* here, const std::uint8_t* below, const std::
 
 }  // namespace
 
+/// The slab of a patch's facets across their area-weighted mean normal, widened by a margin far
+/// above the rounding of these sums and of the row arithmetic that uses it (1e-9 of the largest
+/// coordinate), so that it leaves out only points the exact test would reject. Unusable when the
+/// normals cancel out (a thin sheet seen from both sides).
+BoundaryShell::Slab BoundaryShell::slab_of(std::span<const std::array<VertexIndex, 3>> triangles,
+                                           const std::vector<Vec3>& vertices) {
+  Vec3 sum{0, 0, 0};
+  double scale = 0.0;
+  for (const auto& tri : triangles) {
+    const Vec3& a = vertices[tri[0]];
+    const Vec3& b = vertices[tri[1]];
+    const Vec3& c = vertices[tri[2]];
+    const Vec3 u{b.x - a.x, b.y - a.y, b.z - a.z};
+    const Vec3 v{c.x - a.x, c.y - a.y, c.z - a.z};
+    sum = {sum.x + (u.y * v.z - u.z * v.y), sum.y + (u.z * v.x - u.x * v.z),
+           sum.z + (u.x * v.y - u.y * v.x)};
+    for (const Vec3* p : {&a, &b, &c}) {
+      scale = std::max({scale, std::fabs(p->x), std::fabs(p->y), std::fabs(p->z)});
+    }
+  }
+  Slab out;
+  const double length = std::sqrt(sum.x * sum.x + sum.y * sum.y + sum.z * sum.z);
+  if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(scale)) return out;
+  out.n = {sum.x / length, sum.y / length, sum.z / length};
+  out.lo = std::numeric_limits<double>::infinity();
+  out.hi = -std::numeric_limits<double>::infinity();
+  for (const auto& tri : triangles) {
+    for (const VertexIndex corner : tri) {
+      const Vec3& p = vertices[corner];
+      const double s = out.n.x * p.x + out.n.y * p.y + out.n.z * p.z;
+      out.lo = std::min(out.lo, s);
+      out.hi = std::max(out.hi, s);
+    }
+  }
+  // The computed n is unit to a few ulps, and each dot product is off by a few ulps of the
+  // coordinates' scale: 1e-9 of it covers both with room to spare.
+  const double margin = 1e-9 * (scale + 1.0);
+  out.lo -= margin;
+  out.hi += margin;
+  out.usable = true;
+  return out;
+}
+
 BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, ShellMode mode,
                              double thickness_mm)
-    : mesh_(mesh), grid_(grid), mode_(mode), thickness_mm_(thickness_mm) {
+    : mesh_(mesh),
+      grid_(grid),
+      mode_(mode),
+      thickness_mm_(thickness_mm),
+      reach_(reach_layers(grid, mode, thickness_mm)) {
   if (mode_ == ShellMode::Layers) {
-    const double d = std::min({grid_.dx, grid_.dy, grid_.dz});
     unequal_sizes_ = !(grid_.dx == grid_.dy && grid_.dy == grid_.dz);
-    const double n = std::floor(thickness_mm_ / d);
-    rings_ = static_cast<std::uint32_t>(std::clamp(n, 1.0, 255.0));
-    reach_ = rings_;
+    rings_ = reach_;
     return;
   }
-  reach_ = 1;
   if (!(thickness_mm_ > 0.0)) return;
   const std::size_t nf = mesh_.triangles.size();
   std::vector<double> zmin(nf);
@@ -218,8 +251,10 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
                      });
   std::vector<Patch> patches;
   for (std::size_t r = 0; r < nf;) {
-    Patch patch{static_cast<std::uint32_t>(r), 0, zmin[facets_by_patch[r]],
-                zmax[facets_by_patch[r]]};
+    Patch patch;
+    patch.begin = static_cast<std::uint32_t>(r);
+    patch.zmin = zmin[facets_by_patch[r]];
+    patch.zmax = zmax[facets_by_patch[r]];
     const std::uint64_t key = patch_key[facets_by_patch[r]];
     for (; r < nf && patch_key[facets_by_patch[r]] == key; ++r) {
       patch.zmin = std::min(patch.zmin, zmin[facets_by_patch[r]]);
@@ -228,11 +263,34 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
     patch.end = static_cast<std::uint32_t>(r);
     patches.push_back(patch);
   }
-  // The facets' corners in patch order, read in sequence by the layers rather than gathered
-  // from across the mesh.
+  // The facets in patch order, and their vertices copied in the order these facets first use
+  // them: the layers read both in sequence rather than gathering corners from across the mesh
+  // (a vertex load missed the cache in most facets of a large mesh).
+  constexpr VertexIndex kUnnumbered = std::numeric_limits<VertexIndex>::max();
+  std::vector<VertexIndex> renumbered(mesh_.vertices.size(), kUnnumbered);
   triangles_by_patch_.resize(nf);
-  tbb::parallel_for(std::size_t{0}, nf, [&](std::size_t r) {
-    triangles_by_patch_[r] = mesh_.triangles[facets_by_patch[r]];
+  vertices_by_patch_.clear();
+  vertices_by_patch_.reserve(mesh_.vertices.size());
+  for (Patch& patch : patches) {
+    patch.vertex_begin = static_cast<std::uint32_t>(vertices_by_patch_.size());
+    for (std::uint32_t r = patch.begin; r < patch.end; ++r) {
+      const auto& tri = mesh_.triangles[facets_by_patch[r]];
+      for (int corner = 0; corner < 3; ++corner) {
+        VertexIndex& to = renumbered[tri[corner]];
+        if (to == kUnnumbered) {
+          to = static_cast<VertexIndex>(vertices_by_patch_.size());
+          vertices_by_patch_.push_back(mesh_.vertices[tri[corner]]);
+        }
+        triangles_by_patch_[r][corner] = to;
+      }
+    }
+    patch.vertex_end = static_cast<std::uint32_t>(vertices_by_patch_.size());
+  }
+  // A patch's slab serves every layer: the facets a layer tests are some of the patch's.
+  tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t q) {
+    Patch& patch = patches[q];
+    patch.slab = slab_of(std::span(triangles_by_patch_).subspan(patch.begin, patch.end - patch.begin),
+                         vertices_by_patch_);
   });
   std::sort(patches.begin(), patches.end(), [](const Patch& a, const Patch& b) {
     return a.zmin != b.zmin ? a.zmin < b.zmin : a.begin < b.begin;
@@ -246,6 +304,13 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
     running = std::max(running, patches_[q].zmax);
     zmax_prefix_max_[q] = running;
   }
+}
+
+std::uint32_t BoundaryShell::reach_layers(const GridSpec& grid, ShellMode mode,
+                                          double thickness_mm) {
+  if (mode != ShellMode::Layers) return 1;
+  const double n = std::floor(thickness_mm / std::min({grid.dx, grid.dy, grid.dz}));
+  return static_cast<std::uint32_t>(std::clamp(n, 1.0, 255.0));
 }
 
 void BoundaryShell::classify(std::uint32_t k, const SolidLayerLookup& solid,
@@ -291,13 +356,21 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
     small.clear();
     for (std::uint32_t r = patch.begin; r < patch.end; ++r) {
       const auto& tri = triangles_by_patch_[r];
-      const Vec3& a = mesh_.vertices[tri[0]];
-      const Vec3& b = mesh_.vertices[tri[1]];
-      const Vec3& c = mesh_.vertices[tri[2]];
+      const Vec3& a = vertices_by_patch_[tri[0]];
+      const Vec3& b = vertices_by_patch_[tri[1]];
+      const Vec3& c = vertices_by_patch_[tri[2]];
       const double z_min = std::min({a.z, b.z, c.z});
       const double z_max = std::max({a.z, b.z, c.z});
       if (z_max < z_lo || z_min > z_hi) continue;
-      if (!slab_footprint(a, b, c, z_lo, z_hi, box)) continue;
+      if (z_min >= z_lo && z_max <= z_hi) {
+        // Within the slab (most facets of a fine mesh): the footprint is the facet's own box.
+        box[0] = std::min({a.x, b.x, c.x});
+        box[1] = std::min({a.y, b.y, c.y});
+        box[2] = std::max({a.x, b.x, c.x});
+        box[3] = std::max({a.y, b.y, c.y});
+      } else if (!slab_footprint(a, b, c, z_lo, z_hi, box)) {
+        continue;
+      }
       // A point closer than t to the facet is closer than sqrt(t^2 - gap^2) to it across the
       // layer, gap being the facet's z-distance from the layer's plane: the far layers of the
       // slab search a narrower box. The margins only widen it.
@@ -317,12 +390,13 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
       mark_near_wide_facet(a, b, c, z, box, grow, i0_box, i1_box, j0, j1, out);
     }
     if (small.empty()) continue;
-    mark_near_small_facets(small, z, out);
+    mark_near_small_facets(small, patch, z, out);
   }
 }
 
-void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, double z,
-                                           std::vector<CellClass>& out) const {
+void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, const Patch& patch,
+                                           double z, std::vector<CellClass>& out) const {
+  const Slab& slab = patch.slab;
   const double t = thickness_mm_;
   const std::uint32_t nx = grid_.nx;
   std::int64_t pi0 = facets[0].i0, pi1 = facets[0].i1, pj0 = facets[0].j0, pj1 = facets[0].j1;
@@ -360,17 +434,14 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, d
   // read once for the patch, and each facet visits only the interior cells of its box.
   std::uint64_t interior[kMaxPatchRows];
   const std::int64_t rows = std::min<std::int64_t>(pj1 - pj0 + 1, kMaxPatchRows);
+  const std::size_t width = static_cast<std::size_t>(pi1 - pi0 + 1);
   for (std::int64_t r = 0; r < rows; ++r) {
-    const CellClass* row = out.data() + static_cast<std::size_t>(pj0 + r) * nx;
-    std::uint64_t bits = 0;
-    for (std::int64_t i = pi0; i <= pi1; ++i) {
-      bits |= static_cast<std::uint64_t>(row[i] == CellClass::Interior) << (i - pi0);
-    }
-    interior[r] = bits;
+    const std::size_t at = static_cast<std::size_t>(pj0 + r) * nx + static_cast<std::size_t>(pi0);
+    interior[r] = interior_bits(out.data() + at, std::min<std::size_t>(64, out.size() - at)) &
+                  low_bits(width);
   }
   // Cells beyond the slab of the patch's facets, widened by t, are farther than t from each of
   // them: most of the patch's box past the shell, which no facet then tests.
-  const Slab slab = slab_of(facets);
   if (slab.usable) {
     const double lo = slab.lo - t;
     const double hi = slab.hi + t;
@@ -400,28 +471,28 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, d
       std::uint64_t keep = 0;
       if (i0 <= i1) {
         const std::int64_t span = i1 - i0 + 1;
-        keep = (span >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << span) - 1) << (i0 - pi0);
+        keep = low_bits(static_cast<std::size_t>(span)) << (i0 - pi0);
       }
       interior[r] &= keep;
     }
   }
+  mark_near_vertices(std::span(vertices_by_patch_)
+                         .subspan(patch.vertex_begin, patch.vertex_end - patch.vertex_begin),
+                     z, pi0, pi1, pj0, rows, interior, out);
+  // The kept rows that still hold an interior cell: a facet visits only those (the vertices
+  // leave none in many patches).
+  std::int64_t first_row = 0;
+  std::int64_t last_row = rows - 1;
+  while (first_row < rows && interior[first_row] == 0) ++first_row;
+  while (last_row >= first_row && interior[last_row] == 0) --last_row;
+  const std::int64_t beyond_words = pj0 + kMaxPatchRows;
   for (const FacetReach& facet : facets) {
     filter.reset();
     const std::uint64_t span = facet.i1 - facet.i0 + 1;
-    const std::uint64_t in_box = (span >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << span) - 1)
-                                 << (facet.i0 - pi0);
-    for (std::int64_t j = facet.j0; j <= facet.j1; ++j) {
+    const std::uint64_t in_box = low_bits(span) << (facet.i0 - pi0);
+    const std::int64_t j_end = std::min(facet.j1, pj0 + last_row);
+    for (std::int64_t j = std::max(facet.j0, pj0 + first_row); j <= j_end; ++j) {
       const std::int64_t r = j - pj0;
-      if (r >= kMaxPatchRows) {
-        // A patch taller than the words kept: the rows beyond, cell by cell.
-        CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
-        for (std::int64_t i = facet.i0; i <= facet.i1; ++i) {
-          if (row[i] == CellClass::Interior && test(facet, filter, i, j)) {
-            row[i] = CellClass::Boundary;
-          }
-        }
-        continue;
-      }
       std::uint64_t candidates = interior[r] & in_box;
       while (candidates != 0) {
         const int bit = std::countr_zero(candidates);
@@ -431,6 +502,79 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, d
           out[static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i)] = CellClass::Boundary;
           interior[r] &= ~(std::uint64_t{1} << bit);
         }
+      }
+    }
+    // A patch taller than the words kept: the rows beyond, cell by cell.
+    for (std::int64_t j = std::max(facet.j0, beyond_words); j <= facet.j1; ++j) {
+      CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
+      for (std::int64_t i = facet.i0; i <= facet.i1; ++i) {
+        if (row[i] == CellClass::Interior && test(facet, filter, i, j)) {
+          row[i] = CellClass::Boundary;
+        }
+      }
+    }
+  }
+}
+
+void BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, double z, std::int64_t pi0,
+                                       std::int64_t pi1, std::int64_t pj0, std::int64_t rows,
+                                       std::uint64_t* interior,
+                                       std::vector<CellClass>& out) const {
+  const double t = thickness_mm_;
+  const double t2 = t * t;
+  const std::uint32_t nx = grid_.nx;
+  const GridAxis x_axis(grid_.x0, grid_.dx, grid_.nx);
+  const GridAxis y_axis(grid_.y0, grid_.dy, grid_.ny);
+  // |p - v|^2 is a sum of three squares of rounded differences: its computed value is within
+  // 8 u of the true one, and t * t within u of t^2. The 1e-12 margins cover both by far, so
+  // this holds only where the true |p - v| is less than t. The ranges of rows and cells are
+  // guesses: a run's two ends are checked, and the distance is convex along the row, so every
+  // cell between them is closer too; a cell a guess leaves out is left to the facets.
+  const double accept_below = t2 * (1.0 - 1e-12);
+  const auto certainly_closer = [&](double dx, double dyz2) {
+    return (dx * dx + dyz2) * (1.0 + 1e-12) < accept_below;
+  };
+  for (const Vec3& v : vertices) {
+    const double dz = z - v.z;
+    const double dz2 = dz * dz;
+    if (!(dz2 < t2)) continue;
+    const double reach = std::sqrt(t2 - dz2);
+    const auto [j0, j1] = y_axis.centres_within(v.y - reach, v.y + reach);
+    const std::int64_t r0 = std::max<std::int64_t>(j0 - pj0, 0);
+    const std::int64_t r1 = std::min<std::int64_t>(j1 - pj0, rows - 1);
+    const auto [c0, c1] = x_axis.centres_within(v.x - reach, v.x + reach);
+    const std::int64_t b0 = std::max(c0, pi0);
+    const std::int64_t b1 = std::min(c1, pi1);
+    if (r0 > r1 || b0 > b1) continue;
+    // The columns the vertex reaches: a row with no interior cell among them is passed by
+    // (most rows, once the first vertices of the patch have marked their cells).
+    const std::int64_t columns = b1 - b0 + 1;
+    const std::uint64_t reached = low_bits(static_cast<std::size_t>(columns)) << (b0 - pi0);
+    for (std::int64_t r = r0; r <= r1; ++r) {
+      if ((interior[r] & reached) == 0) continue;
+      const double dy = grid_.yc(static_cast<std::uint32_t>(pj0 + r)) - v.y;
+      const double dyz2 = dy * dy + dz2;
+      const double h2 = t2 - dyz2;
+      if (!(h2 > 0.0)) continue;
+      const double h = std::sqrt(h2);
+      auto [i0, i1] = x_axis.centres_within(v.x - h, v.x + h);
+      i0 = std::max(i0, b0);
+      i1 = std::min(i1, b1);
+      while (i0 <= i1 && !certainly_closer(grid_.xc(static_cast<std::uint32_t>(i0)) - v.x, dyz2)) {
+        ++i0;
+      }
+      while (i1 > i0 && !certainly_closer(grid_.xc(static_cast<std::uint32_t>(i1)) - v.x, dyz2)) {
+        --i1;
+      }
+      if (i0 > i1) continue;
+      const std::int64_t width = i1 - i0 + 1;
+      const std::uint64_t run = low_bits(static_cast<std::size_t>(width)) << (i0 - pi0);
+      std::uint64_t hits = interior[r] & run;
+      interior[r] &= ~run;
+      CellClass* row = out.data() + static_cast<std::size_t>(pj0 + r) * nx;
+      while (hits != 0) {
+        row[pi0 + std::countr_zero(hits)] = CellClass::Boundary;
+        hits &= hits - 1;
       }
     }
   }

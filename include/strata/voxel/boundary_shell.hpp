@@ -34,6 +34,8 @@ class BoundaryShell {
 
   /// How many layers on each side of k classify(k) reads.
   std::uint32_t reach_layers() const { return reach_; }
+  /// The same, known before the marker is built (a slice plans its layers while it is).
+  static std::uint32_t reach_layers(const GridSpec& grid, ShellMode mode, double thickness_mm);
   /// The ring count n of the Layers mode (at least 1: cells that touch the outside are always
   /// boundary).
   std::uint32_t rings() const { return rings_; }
@@ -52,9 +54,26 @@ class BoundaryShell {
   };
   /// The rows of a patch's box kept as bit words (a row's interior cells, 64 at most).
   static constexpr std::int64_t kMaxPatchRows = 64;
+  /// A slab across a unit direction n that holds a set of triangles: every point q of them has
+  /// lo <= n · q <= hi. A point p with n · p outside [lo - t, hi + t] is farther than t from each
+  /// of them (|n · (p - q)| <= |p - q|), whatever their shape.
+  struct Slab {
+    Vec3 n{0, 0, 0};
+    double lo = 0.0, hi = 0.0;
+    bool usable = false;
+  };
+  static Slab slab_of(std::span<const std::array<VertexIndex, 3>> triangles,
+                      const std::vector<Vec3>& vertices);
+  struct Patch;
   /// The small facets of a patch, tested over the patch's box.
-  void mark_near_small_facets(std::span<const FacetReach> facets, double z,
+  void mark_near_small_facets(std::span<const FacetReach> facets, const Patch& patch, double z,
                               std::vector<CellClass>& out) const;
+  /// Marks the interior cells (bits of `interior`, row r of the box from row pj0, bit i - pi0)
+  /// certainly closer than t to one of `vertices`, and clears their bits: they are closer than
+  /// t to the surface, and no facet need test them.
+  void mark_near_vertices(std::span<const Vec3> vertices, double z, std::int64_t pi0,
+                          std::int64_t pi1, std::int64_t pj0, std::int64_t rows,
+                          std::uint64_t* interior, std::vector<CellClass>& out) const;
   /// A facet at least kNarrowFromCells wide: each row narrowed to the stretch near the facet.
   void mark_near_wide_facet(const Vec3& a, const Vec3& b, const Vec3& c, double z,
                             const double box[4], double grow, std::int64_t i0_box,
@@ -67,7 +86,7 @@ class BoundaryShell {
   GridSpec grid_;
   ShellMode mode_;
   double thickness_mm_;
-  std::uint32_t reach_ = 1;
+  std::uint32_t reach_;
   std::uint32_t rings_ = 1;
   bool unequal_sizes_ = false;
   // Distance mode: the facets in patches of neighbours (their centroids in one box of
@@ -78,9 +97,13 @@ class BoundaryShell {
   static constexpr double kPatchLayers = 4.0;
   struct Patch {
     std::uint32_t begin = 0, end = 0;  ///< in triangles_by_patch_
+    /// The vertices its facets use first (in vertices_by_patch_): each vertex is in one patch.
+    std::uint32_t vertex_begin = 0, vertex_end = 0;
     double zmin = 0.0, zmax = 0.0;
+    Slab slab;
   };
-  std::vector<std::array<VertexIndex, 3>> triangles_by_patch_;
+  std::vector<std::array<VertexIndex, 3>> triangles_by_patch_;  ///< into vertices_by_patch_
+  std::vector<Vec3> vertices_by_patch_;  ///< the mesh's vertices in the order patches use them
   std::vector<Patch> patches_;
   std::vector<double> zmin_sorted_;
   std::vector<double> zmax_prefix_max_;
