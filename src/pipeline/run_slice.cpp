@@ -77,10 +77,23 @@ struct ClassifiedLayer {
 };
 
 void count_classes(ClassifiedLayer& layer) {
+  // Counted on byte-wide sums over runs of 255 cells, which the compiler takes many cells a
+  // step, then added up.
+  constexpr std::size_t kRun = 255;
+  const auto* codes = reinterpret_cast<const std::uint8_t*>(layer.cells.data());
+  const std::size_t n = layer.cells.size();
+  const auto interior_code = static_cast<std::uint8_t>(CellClass::Interior);
+  const auto boundary_code = static_cast<std::uint8_t>(CellClass::Boundary);
   std::uint64_t interior = 0, boundary = 0;
-  for (const CellClass c : layer.cells) {
-    interior += c == CellClass::Interior ? 1 : 0;
-    boundary += c == CellClass::Boundary ? 1 : 0;
+  for (std::size_t at = 0; at < n; at += kRun) {
+    const std::size_t end = std::min(n, at + kRun);
+    std::uint8_t run_interior = 0, run_boundary = 0;
+    for (std::size_t c = at; c < end; ++c) {
+      run_interior += codes[c] == interior_code ? 1 : 0;
+      run_boundary += codes[c] == boundary_code ? 1 : 0;
+    }
+    interior += run_interior;
+    boundary += run_boundary;
   }
   layer.interior = interior;
   layer.boundary = boundary;
@@ -110,17 +123,8 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
       options.always_classify ||
       std::any_of(sinks.begin(), sinks.end(), [](const LayerSink* s) { return s->needs_cells(); });
   summary.cells_classified = classify;
-  std::optional<BoundaryShell> shell;
-  if (classify) shell.emplace(mesh, grid, options.shell_mode, options.shell_mm);
-  if (shell && options.shell_mode == ShellMode::Layers && shell->unequal_cell_sizes()) {
-    summary.diagnostics.push_back(
-        {Severity::Warning, "shell.unequal_cell_sizes",
-         fmt::format("shell mode layers with unequal cell sizes ({} x {} x {} mm): rings are "
-                     "counted with the smallest, {} rings of {} mm",
-                     grid.dx, grid.dy, grid.dz, shell->rings(),
-                     std::min({grid.dx, grid.dy, grid.dz}))});
-  }
-  const std::uint32_t reach = shell ? shell->reach_layers() : 0;
+  const std::uint32_t reach =
+      classify ? BoundaryShell::reach_layers(grid, options.shell_mode, options.shell_mm) : 0;
   // A range also slices the layers around it that the shell reads (their cells are not sent),
   // so that its cells are those of a whole run; the work is the range's plus the shell's reach.
   const std::uint32_t lo = first > reach ? first - reach : 0;
@@ -216,7 +220,25 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
   std::vector<ClassifiedLayer> classifying;
   std::vector<const LayerGeometry*> classifying_geometry;
   std::vector<LayerGeometry> computed;
-  if (lo < hi) computed = compute_batch(lo, std::min(hi, lo + batch));
+  // The shell's marker is built (its facets grouped, partly on one thread) while the first
+  // batch is computed: nothing is classified before both are done.
+  std::optional<BoundaryShell> shell;
+  {
+    tbb::task_group setup;
+    if (classify) {
+      setup.run([&] { shell.emplace(mesh, grid, options.shell_mode, options.shell_mm); });
+    }
+    if (lo < hi) computed = compute_batch(lo, std::min(hi, lo + batch));
+    setup.wait();
+  }
+  if (shell && options.shell_mode == ShellMode::Layers && shell->unequal_cell_sizes()) {
+    summary.diagnostics.push_back(
+        {Severity::Warning, "shell.unequal_cell_sizes",
+         fmt::format("shell mode layers with unequal cell sizes ({} x {} x {} mm): rings are "
+                     "counted with the smallest, {} rings of {} mm",
+                     grid.dx, grid.dy, grid.dz, shell->rings(),
+                     std::min({grid.dx, grid.dy, grid.dz}))});
+  }
   for (std::uint32_t k0 = lo; k0 < hi; k0 += batch) {
     const std::uint32_t k1 = std::min(hi, k0 + batch);
     for (std::uint32_t k = k0; k < k1; ++k) {
