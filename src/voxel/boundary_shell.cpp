@@ -285,6 +285,11 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
       }
     }
     patch.vertex_end = static_cast<std::uint32_t>(vertices_by_patch_.size());
+    for (std::uint32_t v = patch.vertex_begin; v < patch.vertex_end; ++v) {
+      const Vec3& p = vertices_by_patch_[v];
+      patch.vertex_lo = {std::min(patch.vertex_lo.x, p.x), std::min(patch.vertex_lo.y, p.y), 0.0};
+      patch.vertex_hi = {std::max(patch.vertex_hi.x, p.x), std::max(patch.vertex_hi.y, p.y), 0.0};
+    }
   }
   // A patch's slab serves every layer: the facets a layer tests are some of the patch's.
   tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t q) {
@@ -347,6 +352,22 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
       zmax_prefix_max_.begin();
   const GridAxis x_axis(grid_.x0, grid_.dx, grid_.nx);
   const GridAxis y_axis(grid_.y0, grid_.dy, grid_.ny);
+  // First every patch's vertices, so that the facets below test only the cells no vertex of any
+  // patch is closer than t to (a patch's box reaches into its neighbours' shell).
+  for (std::size_t q = begin; q < end; ++q) {
+    const Patch& patch = patches_[q];
+    if (patch.zmax < z_lo) continue;
+    const auto [pi0, pi1] = x_axis.centres_within(patch.vertex_lo.x - t, patch.vertex_hi.x + t);
+    const auto [pj0, pj1] = y_axis.centres_within(patch.vertex_lo.y - t, patch.vertex_hi.y + t);
+    // Boxes wider than a word or taller than the words kept are left to the facets.
+    if (pi0 > pi1 || pj0 > pj1 || pi1 - pi0 >= 64 || pj1 - pj0 >= kMaxPatchRows) continue;
+    std::uint64_t interior[kMaxPatchRows];
+    const std::int64_t rows = pj1 - pj0 + 1;
+    gather_interior(out, pi0, pi1, pj0, rows, interior);
+    mark_near_vertices(std::span(vertices_by_patch_)
+                           .subspan(patch.vertex_begin, patch.vertex_end - patch.vertex_begin),
+                       z, pi0, pi1, pj0, rows, interior, out);
+  }
   constexpr double kNarrowFromCells = 8.0;
   std::vector<FacetReach> small;
   double box[4];
@@ -434,12 +455,7 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
   // read once for the patch, and each facet visits only the interior cells of its box.
   std::uint64_t interior[kMaxPatchRows];
   const std::int64_t rows = std::min<std::int64_t>(pj1 - pj0 + 1, kMaxPatchRows);
-  const std::size_t width = static_cast<std::size_t>(pi1 - pi0 + 1);
-  for (std::int64_t r = 0; r < rows; ++r) {
-    const std::size_t at = static_cast<std::size_t>(pj0 + r) * nx + static_cast<std::size_t>(pi0);
-    interior[r] = interior_bits(out.data() + at, std::min<std::size_t>(64, out.size() - at)) &
-                  low_bits(width);
-  }
+  gather_interior(out, pi0, pi1, pj0, rows, interior);
   // Cells beyond the slab of the patch's facets, widened by t, are farther than t from each of
   // them: most of the patch's box past the shell, which no facet then tests.
   if (slab.usable) {
@@ -476,9 +492,6 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
       interior[r] &= keep;
     }
   }
-  mark_near_vertices(std::span(vertices_by_patch_)
-                         .subspan(patch.vertex_begin, patch.vertex_end - patch.vertex_begin),
-                     z, pi0, pi1, pj0, rows, interior, out);
   // The kept rows that still hold an interior cell: a facet visits only those (the vertices
   // leave none in many patches).
   std::int64_t first_row = 0;
@@ -513,6 +526,18 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
         }
       }
     }
+  }
+}
+
+void BoundaryShell::gather_interior(const std::vector<CellClass>& cells, std::int64_t pi0,
+                                    std::int64_t pi1, std::int64_t pj0, std::int64_t rows,
+                                    std::uint64_t* interior) const {
+  const std::size_t width = static_cast<std::size_t>(pi1 - pi0 + 1);
+  for (std::int64_t r = 0; r < rows; ++r) {
+    const std::size_t at =
+        static_cast<std::size_t>(pj0 + r) * grid_.nx + static_cast<std::size_t>(pi0);
+    interior[r] = interior_bits(cells.data() + at, std::min<std::size_t>(64, cells.size() - at)) &
+                  low_bits(width);
   }
 }
 

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -68,6 +69,9 @@ class BoundaryShell {
   /// The small facets of a patch, tested over the patch's box.
   void mark_near_small_facets(std::span<const FacetReach> facets, const Patch& patch, double z,
                               std::vector<CellClass>& out) const;
+  /// The interior cells of rows pj0 .. pj0 + rows - 1, columns pi0 .. pi1 (at most 64), as bits.
+  void gather_interior(const std::vector<CellClass>& cells, std::int64_t pi0, std::int64_t pi1,
+                       std::int64_t pj0, std::int64_t rows, std::uint64_t* interior) const;
   /// Marks the interior cells (bits of `interior`, row r of the box from row pj0, bit i - pi0)
   /// certainly closer than t to one of `vertices`, and clears their bits: they are closer than
   /// t to the surface, and no facet need test them.
@@ -99,6 +103,9 @@ class BoundaryShell {
     std::uint32_t begin = 0, end = 0;  ///< in triangles_by_patch_
     /// The vertices its facets use first (in vertices_by_patch_): each vertex is in one patch.
     std::uint32_t vertex_begin = 0, vertex_end = 0;
+    /// The x-y box of those vertices (z unused); empty when there are none.
+    Vec3 vertex_lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), 0.0};
+    Vec3 vertex_hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), 0.0};
     double zmin = 0.0, zmax = 0.0;
     Slab slab;
   };
