@@ -22,6 +22,6 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # recommended, not required, so the command line installs alone with --no-install-recommends.
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
     "cmake, pkg-config, libcgal-dev, libboost-dev, libgmp-dev, libmpfr-dev, libtbb-dev, \
-libpng-dev, zlib1g-dev, libfmt-dev, nlohmann-json3-dev, lib3mf-dev")
+zlib1g-dev, libfmt-dev, nlohmann-json3-dev, lib3mf-dev")
 set(CPACK_DEBIAN_COMPRESSION_TYPE xz)
 include(CPack)

@@ -9,21 +9,18 @@
 
 namespace strata::io {
 
-/// Grey levels and compression of the PNG stack.
+/// Grey levels of the PNG stack.
 struct PngOptions {
   std::uint8_t empty = 0;
   std::uint8_t interior = 128;
   std::uint8_t boundary = 255;
-  /// zlib level 0 (none) .. 9 (smallest). 3: a layer of three grey levels is long runs, which a
-  /// fast level packs nearly as well (rear_case: 3.4 MB at 3 against 2.2 MB at 6, the stack
-  /// written in well under half the time).
-  int compression_level = 3;
 };
 
 /// A sink that writes one 8-bit grey PNG a layer (SPEC §3.2): `dir/png/<stem>_00000.png`, ... (the
 /// layer index with at least 5 digits). The image is nx × ny pixels, pixel (i, j) shows cell
 /// (i, j) with row j = 0 at the BOTTOM of the image; the pixel pitch is stored in a pHYs chunk
-/// (pixels per metre, rounded) when it fits.
+/// (pixels per metre, rounded) when it fits. The image data is deflated as runs of a grey level
+/// and copies of the row above, what a layer is made of.
 ///
 /// Each layer is written under a temporary name and renamed into place when it is complete;
 /// finish() then removes files `<stem>_<index>.png` left in the folder by an earlier run with

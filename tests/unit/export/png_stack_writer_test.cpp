@@ -198,9 +198,9 @@ TEST(PngStackWriter, NoPixelPitchWhenACellSizeDoesNotFitThePngChunk) {
   }
 }
 
-TEST(PngStackWriter, AnImageLibpngRefusesIsAnInternalErrorNamingTheLayerFile) {
+TEST(PngStackWriter, AnImagePngCannotHoldIsAnInternalErrorNamingTheLayerFile) {
   // A grid without columns has layers of zero cells, which the sink contract allows but PNG
-  // does not (IHDR needs a width of at least 1): libpng's error comes back as the layer's error.
+  // does not (IHDR needs a width of at least 1).
   ScratchDir dir;
   SliceRunInfo run = small_run();
   run.grid.nx = 0;
@@ -210,7 +210,9 @@ TEST(PngStackWriter, AnImageLibpngRefusesIsAnInternalErrorNamingTheLayerFile) {
   auto added = sink->add_layer(layer.result());
   ASSERT_FALSE(added);
   EXPECT_EQ(added.error().code, ErrorCode::Internal);
-  EXPECT_EQ(added.error().message, "cannot encode the PNG of layer 0: Invalid IHDR data");
+  EXPECT_EQ(added.error().message,
+            "cannot encode the PNG of layer 0: a PNG is 1 to 2147483647 pixels wide and high, the "
+            "grid's layers are 0 x 3 cells");
   EXPECT_EQ(added.error().location, (dir / "png/part_00000.png").string());
   EXPECT_EQ(list_tree(dir.path()), std::vector<std::string>{"png"});  // no temporary left
   sink->abort();
