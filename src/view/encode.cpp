@@ -6,28 +6,33 @@
 
 namespace strata::view::detail {
 
-std::string base64(std::string_view bytes) {
+char* write_base64(std::string_view bytes, char* to) {
   static constexpr char kAlphabet[] =
       "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
   const auto* p = reinterpret_cast<const unsigned char*>(bytes.data());
   std::size_t i = 0;
-  for (; i + 3 <= bytes.size(); i += 3) {
+  for (; i + 3 <= bytes.size(); i += 3, to += 4) {
     const std::uint32_t v = (std::uint32_t{p[i]} << 16) | (std::uint32_t{p[i + 1]} << 8) | p[i + 2];
-    out.push_back(kAlphabet[(v >> 18) & 63]);
-    out.push_back(kAlphabet[(v >> 12) & 63]);
-    out.push_back(kAlphabet[(v >> 6) & 63]);
-    out.push_back(kAlphabet[v & 63]);
+    to[0] = kAlphabet[(v >> 18) & 63];
+    to[1] = kAlphabet[(v >> 12) & 63];
+    to[2] = kAlphabet[(v >> 6) & 63];
+    to[3] = kAlphabet[v & 63];
   }
   if (const std::size_t rest = bytes.size() - i; rest > 0) {
     std::uint32_t v = std::uint32_t{p[i]} << 16;
     if (rest == 2) v |= std::uint32_t{p[i + 1]} << 8;
-    out.push_back(kAlphabet[(v >> 18) & 63]);
-    out.push_back(kAlphabet[(v >> 12) & 63]);
-    out.push_back(rest == 2 ? kAlphabet[(v >> 6) & 63] : '=');
-    out.push_back('=');
+    to[0] = kAlphabet[(v >> 18) & 63];
+    to[1] = kAlphabet[(v >> 12) & 63];
+    to[2] = rest == 2 ? kAlphabet[(v >> 6) & 63] : '=';
+    to[3] = '=';
+    to += 4;
   }
+  return to;
+}
+
+std::string base64(std::string_view bytes) {
+  std::string out(base64_size(bytes.size()), '\0');
+  write_base64(bytes, out.data());
   return out;
 }
 

@@ -38,49 +38,109 @@ std::string b64(const std::vector<T>& values) {
 /// make it a string no name or note can be.
 constexpr const char* kLayersMarker = "\x01strata-layers\x01";
 
-/// The page's "layers" object as compact JSON, keys in the order the JSON library writes them
-/// (sorted). Base64 and the loop kinds need no escaping.
-std::string layers_text(const ViewStack& s) {
+/// The text of a base64 string of `bytes`, with its quotes, at `to`; returns the end.
+char* write_quoted_base64(std::string_view bytes, char* to) {
+  *to++ = '"';
+  to = detail::write_base64(bytes, to);
+  *to++ = '"';
+  return to;
+}
+
+constexpr std::string_view kKindKey = R"({"kind":")";
+constexpr std::string_view kPointsKey = R"(","points":")";
+
+/// Characters of a layer's contours as the page reads them:
+/// [{"kind":"outer","points":"<base64 of x, y floats>"},...]
+std::size_t contours_size(const std::vector<ViewLoop>& loops) {
+  std::size_t size = 2 + (loops.empty() ? 0 : loops.size() - 1);
+  for (const ViewLoop& loop : loops) {
+    size += kKindKey.size() + std::string_view(loop_kind_name(loop.kind)).size() +
+            kPointsKey.size() + detail::base64_size(sizeof(float) * loop.xy.size()) + 2;
+  }
+  return size;
+}
+
+/// Writes the contours_size(loops) characters of a layer's contours at `to`; returns the end.
+char* write_contours(const std::vector<ViewLoop>& loops, char* to) {
+  const auto put = [&](std::string_view text) { to = std::copy(text.begin(), text.end(), to); };
+  *to++ = '[';
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    if (l > 0) *to++ = ',';
+    put(kKindKey);
+    put(loop_kind_name(loops[l].kind));
+    put(kPointsKey);
+    to = detail::write_base64(detail::as_bytes(loops[l].xy), to);
+    put("\"}");
+  }
+  *to++ = ']';
+  return to;
+}
+
+/// The page's data with the layers' text where their marker stood, between `before` and
+/// `after`, the rest of the document. The "layers" object is compact JSON, keys in the order the
+/// JSON library writes them (sorted); base64 and the loop kinds need no escaping. Each layer is
+/// written in parallel straight to its place in the one string of the page's size: the layers are
+/// most of a page (tens of MB), which a string a layer, then an array, then the document would
+/// hold three times over and copy as often.
+std::string with_layers_text(std::string_view before, const ViewStack& s, std::string_view after) {
   const std::size_t n = s.stored.size();
-  std::vector<std::string> cells(n), contours(n), hatches(n);
-  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
-    cells[k] = '"' + detail::base64(s.cells_zlib[k]) + '"';
-    std::string& loops = contours[k];
-    loops = "[";
-    for (const ViewLoop& loop : s.contours[k]) {
-      if (loops.size() > 1) loops += ',';
-      loops += R"({"kind":")";
-      loops += loop_kind_name(loop.kind);
-      loops += R"(","points":")";
-      loops += b64(loop.xy);
-      loops += "\"}";
-    }
-    loops += ']';
-    if (s.has_hatches) hatches[k] = '"' + b64(s.hatches[k]) + '"';
-  });
-  const auto array = [&](const std::vector<std::string>& items) {
-    std::size_t size = 2 + n;
-    for (const std::string& item : items) size += item.size();
-    std::string out;
-    out.reserve(size);
-    out += '[';
-    for (std::size_t k = 0; k < n; ++k) {
-      if (k > 0) out += ',';
-      out += items[k];
-    }
-    out += ']';
-    return out;
+  std::vector<std::size_t> cells_at(n + 1), contours_at(n + 1), hatches_at(n + 1);
+  // Item k of an array starts at at[k] (its comma before it); at[n] is the array's "]".
+  const auto lay_out = [&](std::vector<std::size_t>& at, std::size_t start, auto item_size) {
+    at[0] = start + 1;
+    for (std::size_t k = 0; k < n; ++k) at[k + 1] = at[k] + (k > 0) + item_size(k);
+    return at[n] + 1;
   };
-  std::string out = R"({"cells":)";
-  out += array(cells);
-  out += R"(,"contours":)";
-  out += array(contours);
-  out += R"(,"encoding":"2bit-msb-zlib","hatches":)";
-  out += s.has_hatches ? array(hatches) : std::string("null");
-  out += R"(,"stored":)";
-  out += json(s.stored).dump();
-  out += fmt::format(R"(,"stride":{}}})", s.stride);
-  return out;
+  const std::string_view cells_key = R"({"cells":)";
+  const std::string_view contours_key = R"(,"contours":)";
+  const std::string_view hatches_key = R"(,"encoding":"2bit-msb-zlib","hatches":)";
+  const std::string tail =
+      R"(,"stored":)" + json(s.stored).dump() + fmt::format(R"(,"stride":{}}})", s.stride);
+  std::size_t end = lay_out(cells_at, before.size() + cells_key.size(), [&](std::size_t k) {
+    return 2 + detail::base64_size(s.cells_zlib[k].size());
+  });
+  end = lay_out(contours_at, end + contours_key.size(),
+                [&](std::size_t k) { return contours_size(s.contours[k]); });
+  end += hatches_key.size();
+  if (s.has_hatches) {
+    end = lay_out(hatches_at, end, [&](std::size_t k) {
+      return 2 + detail::base64_size(sizeof(float) * s.hatches[k].size());
+    });
+  } else {
+    end += 4;  // null
+  }
+  const std::size_t layers_end = end + tail.size();
+
+  std::string text(layers_end + after.size(), '\0');
+  char* const base = text.data();
+  const auto put = [](std::string_view piece, char* to) {
+    return std::copy(piece.begin(), piece.end(), to);
+  };
+  put(cells_key, put(before, base));
+  put(contours_key, base + cells_at[n] + 1);
+  char* hatches = put(hatches_key, base + contours_at[n] + 1);
+  if (s.has_hatches) {
+    hatches[0] = '[';
+    base[hatches_at[n]] = ']';
+  } else {
+    put("null", hatches);
+  }
+  base[cells_at[0] - 1] = '[';
+  base[cells_at[n]] = ']';
+  base[contours_at[0] - 1] = '[';
+  base[contours_at[n]] = ']';
+  put(after, put(tail, base + layers_end - tail.size()));
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
+    const auto item = [&](const std::vector<std::size_t>& at) {
+      char* to = base + at[k];
+      if (k > 0) *to++ = ',';
+      return to;
+    };
+    write_quoted_base64(s.cells_zlib[k], item(cells_at));
+    write_contours(s.contours[k], item(contours_at));
+    if (s.has_hatches) write_quoted_base64(detail::as_bytes(s.hatches[k]), item(hatches_at));
+  });
+  return text;
 }
 
 void push_segment(std::vector<float>& out, const Vec3& a, const Vec3& b) {
@@ -181,6 +241,22 @@ json validation_view(const json& v) {
   return out;
 }
 
+/// `text` with every "</" written "<\/": a script element ends at "</", and the JSON string
+/// "<\/" reads the same.
+std::string escape_script_end(std::string_view text) {
+  std::string escaped;
+  escaped.reserve(text.size());
+  std::size_t from = 0;
+  for (std::size_t at = text.find("</"); at != std::string_view::npos;
+       at = text.find("</", at + 1)) {
+    escaped.append(text, from, at + 1 - from);
+    escaped.push_back('\\');
+    from = at + 1;
+  }
+  escaped.append(text, from);
+  return escaped;
+}
+
 /// The viewer's text before and after its data marker.
 struct TemplateParts {
   std::string_view before;
@@ -266,21 +342,12 @@ Result<std::string> view_page_data(const ViewPage& page) {
   const std::string marker = key + json(kLayersMarker).dump();
   const std::size_t marker_at = text.find(marker);
   STRATA_ASSERT(marker_at != std::string::npos, "the layers' marker is in the page data");
-  text.replace(marker_at + key.size(), marker.size() - key.size(), layers_text(page.stack));
-  // A script element ends at "</": the JSON string "<\/" reads the same. Copied in pieces
-  // between the few places that need it (tens of MB of layers have none).
-  std::size_t at = text.find("</");
-  if (at == std::string::npos) return text;
-  std::string escaped;
-  escaped.reserve(text.size() + 64);
-  std::size_t from = 0;
-  for (; at != std::string::npos; at = text.find("</", at + 1)) {
-    escaped.append(text, from, at + 1 - from);
-    escaped.push_back('\\');
-    from = at + 1;
-  }
-  escaped.append(text, from);
-  return escaped;
+  // The layers' text holds no "<", and begins and ends with a brace: the document around it is
+  // escaped alone.
+  const std::string_view document = text;
+  const std::size_t layers_at = marker_at + key.size();
+  return with_layers_text(escape_script_end(document.substr(0, layers_at)), page.stack,
+                          escape_script_end(document.substr(marker_at + marker.size())));
 }
 
 std::string view_page_with_data(std::string_view data) {

@@ -28,6 +28,17 @@ TEST(Base64, EncodesEveryByteValue) {
   EXPECT_EQ(text.substr(text.size() - 8), "/P3+/w==");
 }
 
+TEST(WriteBase64, WritesExactlyTheCharactersItsSizeCounts) {
+  for (const std::string bytes : {"", "f", "fo", "foo", "foob"}) {
+    std::string room(detail::base64_size(bytes.size()) + 1, '#');
+    const char* end = detail::write_base64(bytes, room.data());
+    EXPECT_EQ(end, room.data() + room.size() - 1) << bytes;
+    EXPECT_EQ(room.back(), '#') << "nothing past the end: " << bytes;
+    room.pop_back();
+    EXPECT_EQ(room, detail::base64(bytes));
+  }
+}
+
 TEST(ZlibCompress, RoundTripsThroughZlib) {
   std::string layer(100'000, '\0');
   for (std::size_t i = 40'000; i < 60'000; ++i) layer[i] = static_cast<char>(0x55);

@@ -312,6 +312,24 @@ TEST(ViewPageData, EncodesTheStoredLayersAndTheVolume) {
   EXPECT_EQ(volume.at("data"), detail::base64(detail::zlib_compress(std::string("\x03\x01", 2))));
 }
 
+TEST(ViewPageData, EscapesTheEndOfAScriptElementOnBothSidesOfTheLayers) {
+  // The layers' text is written apart from the document around it, which is escaped in two
+  // pieces: the check comes before "layers" in the JSON, the title after it.
+  ViewPage page;
+  page.stack = two_layer_stack(true);
+  diagnose::MeshReport check;
+  check.verdict_reason = "open</edge";
+  page.check = check;
+  page.title = "</title";
+  const Result<std::string> data = view_page_data(page);
+  ASSERT_TRUE(data.has_value());
+  EXPECT_EQ(data->find("</"), std::string::npos) << *data;
+  const json j = json::parse(*data);
+  EXPECT_EQ(j.at("check").at("reason"), "open</edge");
+  EXPECT_EQ(j.at("title"), "</title");
+  EXPECT_EQ(j.at("layers").at("stored"), json::parse("[0, 2]"));
+}
+
 TEST(ViewPageData, WritesNoHatchesWhenTheStackLeftThemOut) {
   ViewPage page;
   page.stack = two_layer_stack(false);
