@@ -16,9 +16,10 @@
 #include <cstdint>
 #include <limits>
 #include <unordered_map>
-#include <unordered_set>
+#include <vector>
 
 #include "soup/position_key.hpp"
+#include "view/flat_index_map_internal.hpp"
 
 namespace strata::view {
 
@@ -107,23 +108,22 @@ class Clustering {
   void group_by_position() {
     // The first vertex of each hash; the later ones of a hash, rare but for equal positions,
     // in a list of their own (a welded mesh has none).
-    std::unordered_map<std::uint64_t, std::uint32_t, KeyHash> first_of_hash;
+    detail::FlatIndexMap<std::uint64_t, KeyHash> first_of_hash(keys_.size());
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>, KeyHash> more_of_hash;
-    first_of_hash.reserve(keys_.size());
     for (std::size_t v = 0; v < keys_.size(); ++v) {
       const Vec3& p = mesh_.vertices[v];
       // +0.0: the two zeros, which compare equal, hash alike.
       const std::uint64_t h =
           soup::DoublesHash{}(std::array<double, 3>{p.x + 0.0, p.y + 0.0, p.z + 0.0});
       keys_[v] = v;
-      const auto [first, inserted] = first_of_hash.emplace(h, static_cast<std::uint32_t>(v));
+      const auto [first, inserted] = first_of_hash.try_emplace(h, static_cast<std::uint32_t>(v));
       if (inserted) continue;
       const auto same = [&](std::uint32_t w) {
         const Vec3& q = mesh_.vertices[w];
         return q.x == p.x && q.y == p.y && q.z == p.z;
       };
-      if (same(first->second)) {
-        keys_[v] = keys_[first->second];
+      if (same(first)) {
+        keys_[v] = keys_[first];
         continue;
       }
       std::vector<std::uint32_t>& more = more_of_hash[h];
@@ -153,16 +153,16 @@ class Clustering {
   /// paints back faces as a defect of the model, which a fold is not.
   IndexedMesh build() const {
     IndexedMesh out;
-    std::unordered_map<std::uint64_t, std::uint32_t, KeyHash> group_index;
+    detail::FlatIndexMap<std::uint64_t, KeyHash> group_index(keys_.size());
     std::vector<std::array<double, 4>> sums;  // x, y, z, count
     std::vector<std::uint32_t> vertex_group(keys_.size());
     for (std::size_t v = 0; v < keys_.size(); ++v) {
-      const auto [it, inserted] =
-          group_index.emplace(keys_[v], static_cast<std::uint32_t>(sums.size()));
+      const auto [group, inserted] =
+          group_index.try_emplace(keys_[v], static_cast<std::uint32_t>(sums.size()));
       if (inserted) sums.push_back({0.0, 0.0, 0.0, 0.0});
-      vertex_group[v] = it->second;
+      vertex_group[v] = group;
       const Vec3& p = mesh_.vertices[v];
-      std::array<double, 4>& s = sums[it->second];
+      std::array<double, 4>& s = sums[group];
       s[0] += p.x;
       s[1] += p.y;
       s[2] += p.z;
@@ -173,7 +173,7 @@ class Clustering {
       const auto& s = sums[g];
       mean[g] = {s[0] / s[3], s[1] / s[3], s[2] / s[3]};
     }
-    std::unordered_set<std::array<std::uint32_t, 3>, TriangleHash> seen;
+    detail::FlatIndexMap<std::array<std::uint32_t, 3>, TriangleHash> seen;
     std::vector<std::uint32_t> used(sums.size(), kUnused);
     for (const auto& t : mesh_.triangles) {
       const std::array<std::uint32_t, 3> g = {vertex_group[t[0]], vertex_group[t[1]],
@@ -184,7 +184,7 @@ class Clustering {
       if (!(before.x * after.x + before.y * after.y + before.z * after.z > 0.0)) continue;
       std::array<std::uint32_t, 3> sorted = g;
       std::sort(sorted.begin(), sorted.end());
-      if (!seen.insert(sorted).second) continue;
+      if (!seen.try_emplace(sorted, 0).second) continue;
       for (const std::uint32_t group : g) {
         if (used[group] == kUnused) {
           used[group] = static_cast<std::uint32_t>(out.vertices.size());
