@@ -47,6 +47,12 @@ class FirstOccurrences {
 
   void add(std::uint64_t key, const T& location) {
     ++count_;
+    // Keys mostly come in increasing order: once `limit` are kept, a key after them all cannot
+    // be among the first (ties keep the first added), and a million defects cost no sorts.
+    if (sorted_ && items_.size() >= limit_ && (items_.empty() || key >= items_.back().first)) {
+      return;
+    }
+    if (!items_.empty() && key < items_.back().first) sorted_ = false;
     items_.push_back({key, location});
     if (items_.size() >= 4 * std::max<std::size_t>(limit_, 1)) trim();
   }
@@ -65,10 +71,12 @@ class FirstOccurrences {
     std::stable_sort(items_.begin(), items_.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
     if (items_.size() > limit_) items_.resize(limit_);
+    sorted_ = true;
   }
 
   std::size_t limit_;
   std::size_t count_ = 0;
+  bool sorted_ = true;  ///< items_ are in increasing order of their keys
   std::vector<std::pair<std::uint64_t, T>> items_;
 };
 

@@ -2,8 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -461,6 +465,58 @@ TEST(DiagnoseMesh, CountsEveryOccurrenceEvenWithoutKeepingALocation) {
   const MeshReport r = diagnose(facets, DiagnoseOptions{.max_locations = 0});
   EXPECT_EQ(r.boundary_edges.count, 3U);
   EXPECT_TRUE(r.boundary_edges.locations.empty());
+}
+
+/// Clusters of 12 points (a 3 x 2 x 2 grid, so three in a row along x) joined by random facets,
+/// 14 a cluster: degenerate facets (repeated or collinear corners), duplicates in both
+/// orientations, non-manifold edges and vertices, over enough vertices to be shared out among
+/// threads.
+std::vector<Triangle> random_cluster_facets(std::uint32_t seed, int clusters = 2000) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> corner(0, 11);
+  std::vector<Triangle> facets;
+  for (int cluster = 0; cluster < clusters; ++cluster) {
+    const auto point = [&](int k) {
+      return Vec3{10.0 * cluster + k % 3, static_cast<double>(k / 3 % 2),
+                  static_cast<double>(k / 6)};
+    };
+    for (int f = 0; f < 12; ++f) {
+      facets.push_back({point(corner(rng)), point(corner(rng)), point(corner(rng))});
+    }
+    facets.push_back(facets[facets.size() - 1 - static_cast<std::size_t>(corner(rng) % 4)]);
+    facets.push_back(reversed(facets.back()));
+  }
+  return facets;
+}
+
+DiagnoseOptions keep_every_location() {
+  return DiagnoseOptions{.max_locations = std::numeric_limits<std::size_t>::max(),
+                         .check_self_intersections = false};
+}
+
+TEST(DiagnoseMesh, KeptLocationsAreTheFirstOfAllLocations) {
+  const TriangleSoup soup = soup_of(random_cluster_facets(5));
+  const IndexedMesh mesh = weld_vertices(soup);
+  const MeshReport all = diagnose_mesh(mesh, soup, keep_every_location());
+  DiagnoseOptions few = keep_every_location();
+  few.max_locations = 5;
+  const MeshReport first = diagnose_mesh(mesh, soup, few);
+  const auto expect_first = [](const auto& kept, const auto& every, const char* what) {
+    EXPECT_EQ(kept.count, every.count) << what;
+    ASSERT_EQ(kept.locations.size(), std::min<std::size_t>(5, every.locations.size())) << what;
+    for (std::size_t i = 0; i < kept.locations.size(); ++i) {
+      EXPECT_EQ(std::memcmp(&kept.locations[i], &every.locations[i], sizeof(kept.locations[i])), 0)
+          << what << " " << i;
+    }
+  };
+  expect_first(first.degenerate_facets, all.degenerate_facets, "degenerate");
+  expect_first(first.duplicate_facets, all.duplicate_facets, "duplicate");
+  expect_first(first.non_manifold_vertices, all.non_manifold_vertices, "non-manifold vertex");
+  expect_first(first.boundary_edges, all.boundary_edges, "boundary");
+  expect_first(first.non_manifold_edges, all.non_manifold_edges, "non-manifold edge");
+  expect_first(first.inconsistent_edges, all.inconsistent_edges, "inconsistent");
+  expect_first(first.unbalanced_edges, all.unbalanced_edges, "unbalanced");
+  expect_first(first.zero_normals, all.zero_normals, "zero normal");
 }
 
 TEST(DiagnoseMesh, NamesEveryVerdict) {
