@@ -2,9 +2,10 @@
 
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
-#include <tbb/parallel_sort.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <array>
@@ -82,7 +83,13 @@ class FirstOccurrences {
 
 class UnionFind {
  public:
-  explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0U); }
+  explicit UnionFind(std::size_t n) { reset(n); }
+
+  /// Makes n singletons again, reusing the storage.
+  void reset(std::size_t n) {
+    parent_.resize(n);
+    std::iota(parent_.begin(), parent_.end(), 0U);
+  }
 
   std::uint32_t find(std::uint32_t x) {
     while (parent_[x] != x) {
@@ -116,38 +123,84 @@ struct EdgeUse {
   bool forward = false;  ///< the facet runs the edge from lo to hi
 };
 
+/// Items grouped by vertex: those of vertex v are items[start[v] .. start[v + 1]).
+template <class Item>
+struct ByVertex {
+  std::vector<std::size_t> start;
+  std::vector<Item> items;
+};
+
+/// A counting sort of the facets' items by vertex: `emit(f, visit)` calls visit(vertex, item)
+/// for each item of facet f, and a vertex's items keep the facets' order. The facets are cut
+/// into one range a thread, each counting and then placing its own items after those of the
+/// ranges before: the result does not depend on the number of threads.
+template <class Item, class Emit>
+ByVertex<Item> sort_by_vertex(std::size_t num_vertices, std::size_t num_facets, const Emit& emit) {
+  constexpr std::size_t kMinFacetsARange = 65536;
+  const std::size_t threads = std::min<std::size_t>(
+      tbb::this_task_arena::max_concurrency(),
+      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+  const std::size_t ranges = std::clamp<std::size_t>(num_facets / kMinFacetsARange, 1, threads);
+  const auto facets_of = [&](std::size_t range) {
+    return std::pair{num_facets * range / ranges, num_facets * (range + 1) / ranges};
+  };
+  // Each range's count of items a vertex, then where its next item for that vertex goes.
+  std::vector<std::vector<std::size_t>> next(ranges, std::vector<std::size_t>(num_vertices, 0));
+  tbb::parallel_for(std::size_t{0}, ranges, [&](std::size_t range) {
+    std::vector<std::size_t>& count = next[range];
+    const auto [begin, end] = facets_of(range);
+    for (std::size_t f = begin; f < end; ++f)
+      emit(f, [&](VertexIndex v, const Item&) { ++count[v]; });
+  });
+  ByVertex<Item> out;
+  out.start.resize(num_vertices + 1);
+  std::size_t placed = 0;
+  for (std::size_t v = 0; v < num_vertices; ++v) {
+    out.start[v] = placed;
+    for (std::vector<std::size_t>& at : next) placed += std::exchange(at[v], placed);
+  }
+  out.start[num_vertices] = placed;
+  out.items.resize(placed);
+  tbb::parallel_for(std::size_t{0}, ranges, [&](std::size_t range) {
+    std::vector<std::size_t>& at = next[range];
+    const auto [begin, end] = facets_of(range);
+    for (std::size_t f = begin; f < end; ++f) {
+      emit(f, [&](VertexIndex v, const Item& item) { out.items[at[v]++] = item; });
+    }
+  });
+  return out;
+}
+
 /// The edge uses of every facet not in `skip` (zero-length edges left out), sorted by edge and
 /// then facet. A counting sort by the lower vertex, then a sort of each vertex's few uses by
 /// (hi, facet, forward): linear but for those small sorts, and no copy of the uses.
 std::vector<EdgeUse> collect_edge_uses(const IndexedMesh& mesh, const std::vector<bool>& skip) {
-  const auto each_use = [&](auto&& visit) {
-    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-      if (skip[f]) continue;
-      const auto& t = mesh.triangles[f];
-      for (int c = 0; c < 3; ++c) {
-        const VertexIndex a = t[c];
-        const VertexIndex b = t[(c + 1) % 3];
-        if (a == b) continue;  // a zero-length edge joins nothing
-        visit(EdgeUse{std::min(a, b), std::max(a, b), static_cast<FacetIndex>(f), a < b});
-      }
-    }
-  };
-  const std::size_t nv = mesh.vertices.size();
-  std::vector<std::size_t> start(nv + 1, 0);
-  each_use([&](const EdgeUse& u) { ++start[std::size_t{u.lo} + 1]; });
-  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-  std::vector<EdgeUse> uses(start[nv]);
-  std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  each_use([&](const EdgeUse& u) { uses[next[u.lo]++] = u; });
+  ByVertex<EdgeUse> by_lo = sort_by_vertex<EdgeUse>(
+      mesh.vertices.size(), mesh.triangles.size(), [&](std::size_t f, auto&& visit) {
+        if (skip[f]) return;
+        const auto& t = mesh.triangles[f];
+        for (int c = 0; c < 3; ++c) {
+          const VertexIndex a = t[c];
+          const VertexIndex b = t[(c + 1) % 3];
+          if (a == b) continue;  // a zero-length edge joins nothing
+          const EdgeUse use{std::min(a, b), std::max(a, b), static_cast<FacetIndex>(f), a < b};
+          visit(use.lo, use);
+        }
+      });
+  std::vector<EdgeUse>& uses = by_lo.items;
+  const std::vector<std::size_t>& start = by_lo.start;
   const auto by_hi_facet = [](const EdgeUse& x, const EdgeUse& y) {
     return std::tie(x.hi, x.facet, x.forward) < std::tie(y.hi, y.facet, y.forward);
   };
-  for (std::size_t v = 0; v < nv; ++v) {
-    const auto first = uses.begin() + static_cast<std::ptrdiff_t>(start[v]);
-    const auto last = uses.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
-    if (last - first > 1) std::sort(first, last, by_hi_facet);
-  }
-  return uses;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.vertices.size(), 4096),
+                    [&](const auto& range) {
+                      for (std::size_t v = range.begin(); v < range.end(); ++v) {
+                        const auto first = uses.begin() + static_cast<std::ptrdiff_t>(start[v]);
+                        const auto last = uses.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
+                        if (last - first > 1) std::sort(first, last, by_hi_facet);
+                      }
+                    });
+  return std::move(uses);
 }
 
 double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -246,46 +299,77 @@ void find_near_vertices(const IndexedMesh& mesh, const Bbox3& bounds, double tol
   report.near_vertices = near.finish();
 }
 
-/// Vertices whose non-degenerate facets split into several fans (edge-connected around it).
-void find_non_manifold_vertices(const IndexedMesh& mesh, const std::vector<bool>& degenerate,
-                                std::size_t limit, MeshReport& report) {
-  const std::size_t nv = mesh.vertices.size();
-  std::vector<std::size_t> start(nv + 1, 0);
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    if (degenerate[f]) continue;
-    for (VertexIndex v : mesh.triangles[f]) ++start[v + 1];
-  }
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<FacetIndex> incident(start[nv]);
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    if (degenerate[f]) continue;
-    for (VertexIndex v : mesh.triangles[f]) incident[fill[v]++] = static_cast<FacetIndex>(f);
-  }
+/// The facets with area around each vertex, in increasing order.
+ByVertex<FacetIndex> facets_around_vertices(const IndexedMesh& mesh,
+                                            const std::vector<bool>& degenerate) {
+  return sort_by_vertex<FacetIndex>(mesh.vertices.size(), mesh.triangles.size(),
+                                    [&](std::size_t f, auto&& visit) {
+                                      if (degenerate[f]) return;
+                                      for (VertexIndex v : mesh.triangles[f]) {
+                                        visit(v, static_cast<FacetIndex>(f));
+                                      }
+                                    });
+}
 
-  FirstOccurrences<Vec3> found{limit};
-  std::vector<std::pair<VertexIndex, std::uint32_t>> neighbours;  // (other vertex, local facet)
+/// Vertices whose non-degenerate facets split into several fans (edge-connected around it), and
+/// extra copies of a facet with area (same three vertices in any order). Each vertex is decided
+/// on its own, a duplicate by the lowest of its vertices: the vertices are shared out among the
+/// threads, and the findings listed in vertex and facet order after.
+void find_vertex_defects_and_duplicates(const IndexedMesh& mesh,
+                                        const std::vector<bool>& degenerate, std::size_t limit,
+                                        MeshReport& report) {
+  const std::size_t nv = mesh.vertices.size();
+  const ByVertex<FacetIndex> around = facets_around_vertices(mesh, degenerate);
+  std::vector<std::uint8_t> is_non_manifold(nv, 0);
+  std::vector<std::uint8_t> is_duplicate(mesh.triangles.size(), 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 2048), [&](const auto& range) {
+    std::vector<std::pair<VertexIndex, std::uint32_t>> neighbours;  // (other vertex, local facet)
+    std::vector<std::pair<std::uint64_t, FacetIndex>> lowest_here;  // (other two vertices, facet)
+    UnionFind fans(0);
+    for (std::size_t v = range.begin(); v < range.end(); ++v) {
+      const std::size_t first = around.start[v];
+      const std::size_t n = around.start[v + 1] - first;
+      neighbours.clear();
+      lowest_here.clear();
+      for (std::size_t k = 0; k < n; ++k) {
+        const FacetIndex f = around.items[first + k];
+        auto t = mesh.triangles[f];
+        for (VertexIndex w : t) {
+          if (w != v) neighbours.push_back({w, static_cast<std::uint32_t>(k)});
+        }
+        std::sort(t.begin(), t.end());
+        if (t[0] == v) lowest_here.push_back({(std::uint64_t{t[1]} << 32) | t[2], f});
+      }
+      if (lowest_here.size() > 1) {
+        std::sort(lowest_here.begin(), lowest_here.end());  // copies follow their first, by facet
+        for (std::size_t s = 1; s < lowest_here.size(); ++s) {
+          if (lowest_here[s].first == lowest_here[s - 1].first)
+            is_duplicate[lowest_here[s].second] = 1;
+        }
+      }
+      if (n < 2) continue;
+      std::sort(neighbours.begin(), neighbours.end());
+      fans.reset(n);
+      for (std::size_t s = 1; s < neighbours.size(); ++s) {
+        if (neighbours[s].first == neighbours[s - 1].first) {
+          fans.unite(neighbours[s].second, neighbours[s - 1].second);
+        }
+      }
+      std::size_t num_fans = 0;
+      for (std::uint32_t k = 0; k < n; ++k) num_fans += fans.find(k) == k ? 1 : 0;
+      is_non_manifold[v] = num_fans > 1 ? 1 : 0;
+    }
+  });
+  FirstOccurrences<Vec3> non_manifold{limit};
   for (std::size_t v = 0; v < nv; ++v) {
-    const std::size_t n = start[v + 1] - start[v];
-    if (n < 2) continue;
-    neighbours.clear();
-    for (std::size_t k = 0; k < n; ++k) {
-      for (VertexIndex w : mesh.triangles[incident[start[v] + k]]) {
-        if (w != v) neighbours.push_back({w, static_cast<std::uint32_t>(k)});
-      }
-    }
-    std::sort(neighbours.begin(), neighbours.end());
-    UnionFind fans(n);
-    for (std::size_t s = 1; s < neighbours.size(); ++s) {
-      if (neighbours[s].first == neighbours[s - 1].first) {
-        fans.unite(neighbours[s].second, neighbours[s - 1].second);
-      }
-    }
-    std::size_t num_fans = 0;
-    for (std::uint32_t k = 0; k < n; ++k) num_fans += fans.find(k) == k ? 1 : 0;
-    if (num_fans > 1) found.add(v, mesh.vertices[v]);
+    if (is_non_manifold[v] != 0) non_manifold.add(v, mesh.vertices[v]);
   }
-  report.non_manifold_vertices = found.finish();
+  report.non_manifold_vertices = non_manifold.finish();
+  FirstOccurrences<FacetIndex> duplicates{limit};
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (is_duplicate[f] != 0) duplicates.add(f, static_cast<FacetIndex>(f));
+  }
+  report.duplicate_facets = duplicates.finish();
 }
 
 std::string plural(std::size_t n, const char* singular, const char* plural_form) {
@@ -406,24 +490,6 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
   }
   // The checks below read the mesh and write fields of the report of their own: they run side
   // by side.
-  const auto find_duplicates = [&] {
-    // Among facets with area: zero-area facets are reported as degenerate only.
-    std::vector<std::pair<std::array<VertexIndex, 3>, FacetIndex>> keyed;
-    keyed.reserve(nf);
-    for (std::size_t f = 0; f < nf; ++f) {
-      if (degenerate[f]) continue;
-      auto key = mesh.triangles[f];
-      std::sort(key.begin(), key.end());
-      keyed.emplace_back(key, static_cast<FacetIndex>(f));
-    }
-    tbb::parallel_sort(keyed.begin(), keyed.end());  // the pairs differ: one order
-    FirstOccurrences<FacetIndex> found{limit};
-    for (std::size_t s = 1; s < keyed.size(); ++s) {
-      if (keyed[s].first == keyed[s - 1].first) found.add(keyed[s].second, keyed[s].second);
-    }
-    report.duplicate_facets = found.finish();
-  };
-
   const auto find_edges_and_shells = [&] {
     // ---- edges and shells
     // The reported topology is that of the facets with area: a zero-area facet bounds nothing, and
@@ -571,7 +637,7 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
 
   const auto find_vertex_defects = [&] {
     // ---- vertices
-    find_non_manifold_vertices(mesh, degenerate, limit, report);
+    find_vertex_defects_and_duplicates(mesh, degenerate, limit, report);
     if (!report.bounds.empty() && nv >= 2) {
       const Vec3 lo = report.bounds.min, hi = report.bounds.max;
       const double diagonal =
@@ -614,8 +680,7 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
 
   // The edges and shells take longest (their volumes' parts run in parallel again): first, so
   // that they start at once while the other thread takes the rest.
-  tbb::parallel_invoke(find_edges_and_shells, find_duplicates, find_vertex_defects,
-                       check_stored_normals);
+  tbb::parallel_invoke(find_edges_and_shells, find_vertex_defects, check_stored_normals);
 
   // ---- self-intersections
   if (options.check_self_intersections) {

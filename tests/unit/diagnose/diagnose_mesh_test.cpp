@@ -1,17 +1,21 @@
 #include "strata/diagnose/diagnose_mesh.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "strata/core/error.hpp"
+#include "strata/diagnose/mesh_report_json.hpp"
 #include "strata/mesh/weld_vertices.hpp"
 #include "support/mesh_builders.hpp"
 
@@ -492,6 +496,77 @@ std::vector<Triangle> random_cluster_facets(std::uint32_t seed, int clusters = 2
 DiagnoseOptions keep_every_location() {
   return DiagnoseOptions{.max_locations = std::numeric_limits<std::size_t>::max(),
                          .check_self_intersections = false};
+}
+
+TEST(DiagnoseMesh, DuplicatesAndNonManifoldVerticesMatchABruteForceSearch) {
+  for (const std::uint32_t seed : {1U, 2U, 3U}) {
+    const TriangleSoup soup = soup_of(random_cluster_facets(seed));
+    const IndexedMesh mesh = weld_vertices(soup);
+    const MeshReport r = diagnose_mesh(mesh, soup, keep_every_location());
+    const auto& degenerate = r.degenerate_facets.locations;
+    const auto has_area = [&](FacetIndex f) {
+      return !std::binary_search(degenerate.begin(), degenerate.end(), f);
+    };
+
+    std::vector<FacetIndex> duplicates;
+    std::set<std::array<VertexIndex, 3>> seen;
+    for (FacetIndex f = 0; f < mesh.triangles.size(); ++f) {
+      if (!has_area(f)) continue;
+      auto key = mesh.triangles[f];
+      std::sort(key.begin(), key.end());
+      if (!seen.insert(key).second) duplicates.push_back(f);
+    }
+    EXPECT_EQ(r.duplicate_facets.locations, duplicates) << "seed " << seed;
+    EXPECT_EQ(r.duplicate_facets.count, duplicates.size()) << "seed " << seed;
+
+    // A vertex's fans: its facets with area, joined when they share a second vertex.
+    std::map<VertexIndex, std::vector<FacetIndex>> around;
+    for (FacetIndex f = 0; f < mesh.triangles.size(); ++f) {
+      if (has_area(f)) {
+        for (VertexIndex v : mesh.triangles[f]) around[v].push_back(f);
+      }
+    }
+    std::vector<Vec3> non_manifold;
+    for (const auto& [v, facets] : around) {
+      std::vector<int> fan(facets.size(), -1);
+      int fans = 0;
+      for (std::size_t start = 0; start < facets.size(); ++start) {
+        if (fan[start] >= 0) continue;
+        std::vector<std::size_t> stack{start};
+        fan[start] = fans;
+        while (!stack.empty()) {
+          const auto& t = mesh.triangles[facets[stack.back()]];
+          stack.pop_back();
+          for (std::size_t k = 0; k < facets.size(); ++k) {
+            if (fan[k] >= 0) continue;
+            const auto& u = mesh.triangles[facets[k]];
+            for (VertexIndex w : t) {
+              if (w != v && std::find(u.begin(), u.end(), w) != u.end()) {
+                fan[k] = fans;
+                stack.push_back(k);
+                break;
+              }
+            }
+          }
+        }
+        ++fans;
+      }
+      if (fans > 1) non_manifold.push_back(mesh.vertices[v]);
+    }
+    ASSERT_EQ(r.non_manifold_vertices.locations.size(), non_manifold.size()) << "seed " << seed;
+    EXPECT_TRUE(r.non_manifold_vertices.locations == non_manifold) << "seed " << seed;
+    EXPECT_GT(duplicates.size(), 0U);
+    EXPECT_GT(non_manifold.size(), 0U);
+  }
+}
+
+TEST(DiagnoseMesh, OneThreadAndSeveralGiveTheSameReport) {
+  // 84,000 facets: the counting sorts by vertex cut them into one range a thread.
+  const TriangleSoup soup = soup_of(random_cluster_facets(4, 6000));
+  const IndexedMesh mesh = weld_vertices(soup);
+  const std::string several = mesh_report_json(diagnose_mesh(mesh, soup, keep_every_location()));
+  const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+  EXPECT_EQ(mesh_report_json(diagnose_mesh(mesh, soup, keep_every_location())), several);
 }
 
 TEST(DiagnoseMesh, KeptLocationsAreTheFirstOfAllLocations) {
