@@ -65,60 +65,76 @@ double round_to_double(const mpz_class& sum, int scale_exponent) {
   return d;
 }
 
-// Coordinates as integers over 2^min_exponent. With at most 62 bits, a minor (a difference of
-// two products) takes under 2^125 and a facet's determinant under 2^189: one limb a coordinate,
-// two a minor, four a sum over 2^32 facets. With at most 100 bits: two, four and seven.
-constexpr int kMaxBitsOneLimb = 62;
-constexpr int kMaxBitsTwoLimbs = 100;
+/// A coordinate as an integer over the common unit 2^min_exponent: magnitude 2^shift, with its
+/// sign; the magnitude is the double's odd mantissa, below 2^53.
+struct ScaledCoordinate {
+  std::uint64_t magnitude = 0;
+  std::uint32_t shift = 0;
+  bool negative = false;
+};
 
-template <std::size_t L>
-SignedLimbs<L> scaled_coordinate(const Dyadic& d, int min_exponent) {
-  SignedLimbs<L> out;
-  out.negative = d.mantissa < 0;
-  const std::uint64_t m = static_cast<std::uint64_t>(std::llabs(d.mantissa));
-  const int shift = d.exponent - min_exponent;
-  const int limb = shift / 64;
-  const int bit = shift % 64;
-  out.magnitude[static_cast<std::size_t>(limb)] = m << bit;
-  if (bit > 0 && static_cast<std::size_t>(limb) + 1 < L) {
-    out.magnitude[static_cast<std::size_t>(limb) + 1] = m >> (64 - bit);
-  }
-  return out;
-}
+// A facet's determinant is six products of three coordinates, each under 2^(3 w) for coordinates
+// of w bits on the common unit; their sum over 2^32 facets, with its sign, takes 3 w + 36 bits.
+constexpr int kSumMarginBits = 36;
 
-/// The sum of every group's determinants a · (b x c), on integers of L limbs a coordinate.
-/// @pre every scaled coordinate fits the bounds above for L.
-template <std::size_t L>
+/// The sum of every group's determinants a · (b x c), on integers of N limbs: each product of
+/// three coordinates is three limbs (their mantissas) shifted into place, so the work does not
+/// grow with how far apart the coordinates' exponents are.
+/// @pre 3 w + kSumMarginBits <= 64 N for coordinates of w bits on the common unit.
+template <std::size_t N>
 std::vector<mpz_class> sum_determinants(const IndexedMesh& mesh, const std::vector<Dyadic>& dyadic,
                                         int min_exponent,
                                         const std::vector<std::uint32_t>& group_of_facet,
                                         std::size_t num_groups, std::size_t parts) {
-  constexpr std::size_t kSum = 3 * L + 1;
-  std::vector<SignedLimbs<L>> coord(dyadic.size());
+  std::vector<ScaledCoordinate> coord(dyadic.size());
   for (std::size_t i = 0; i < dyadic.size(); ++i) {
-    if (dyadic[i].mantissa != 0) coord[i] = scaled_coordinate<L>(dyadic[i], min_exponent);
+    const Dyadic& d = dyadic[i];
+    if (d.mantissa == 0) continue;
+    coord[i] = {static_cast<std::uint64_t>(std::llabs(d.mantissa)),
+                static_cast<std::uint32_t>(d.exponent - min_exponent), d.mantissa < 0};
   }
   const std::size_t nf = mesh.triangles.size();
-  std::vector<std::vector<Limbs<kSum>>> part_sums(parts, std::vector<Limbs<kSum>>(num_groups));
+  std::vector<std::vector<Limbs<N>>> part_sums(parts, std::vector<Limbs<N>>(num_groups));
   tbb::parallel_for(std::size_t{0}, parts, [&](std::size_t part) {
-    std::vector<Limbs<kSum>>& sums = part_sums[part];
-    for (std::size_t f = nf * part / parts; f < nf * (part + 1) / parts; ++f) {
+    std::vector<Limbs<N>>& sums = part_sums[part];
+    const std::size_t begin = nf * part / parts;
+    const std::size_t end = nf * (part + 1) / parts;
+    if (begin == end) return;
+    // A run of facets of one group is summed apart, and added to the group's sum when it ends:
+    // a group's sum stays N limbs, however many groups (a soup of loose facets makes a million).
+    ShiftedProductSum<N> run;
+    std::uint32_t run_group = group_of_facet[begin];
+    for (std::size_t f = begin; f < end; ++f) {
+      if (group_of_facet[f] != run_group) {
+        add_to(sums[run_group], run.total());
+        run = {};
+        run_group = group_of_facet[f];
+      }
       const auto& t = mesh.triangles[f];
-      const SignedLimbs<L>* a = &coord[3 * static_cast<std::size_t>(t[0])];
-      const SignedLimbs<L>* b = &coord[3 * static_cast<std::size_t>(t[1])];
-      const SignedLimbs<L>* c = &coord[3 * static_cast<std::size_t>(t[2])];
-      Limbs<kSum>& sum = sums[group_of_facet[f]];
-      add_product(sum, a[0], cross_difference(b[1], c[2], b[2], c[1]));
-      add_product(sum, a[1], cross_difference(b[2], c[0], b[0], c[2]));
-      add_product(sum, a[2], cross_difference(b[0], c[1], b[1], c[0]));
+      const ScaledCoordinate* a = &coord[3 * static_cast<std::size_t>(t[0])];
+      const ScaledCoordinate* b = &coord[3 * static_cast<std::size_t>(t[1])];
+      const ScaledCoordinate* c = &coord[3 * static_cast<std::size_t>(t[2])];
+      const auto add_term = [&run](const ScaledCoordinate& x, const ScaledCoordinate& y,
+                                   const ScaledCoordinate& z, bool minus) {
+        run.add(multiply(x.magnitude, y.magnitude, z.magnitude), x.shift + y.shift + z.shift,
+                (x.negative != y.negative) != (z.negative != minus));
+      };
+      // a · (b x c), term by term.
+      add_term(a[0], b[1], c[2], false);
+      add_term(a[0], b[2], c[1], true);
+      add_term(a[1], b[2], c[0], false);
+      add_term(a[1], b[0], c[2], true);
+      add_term(a[2], b[0], c[1], false);
+      add_term(a[2], b[1], c[0], true);
     }
+    add_to(sums[run_group], run.total());
   });
   std::vector<mpz_class> out(num_groups);
   for (std::size_t g = 0; g < num_groups; ++g) {
-    Limbs<kSum> total{};
+    Limbs<N> total{};
     for (std::size_t part = 0; part < parts; ++part) add_to(total, part_sums[part][g]);
-    const SignedLimbs<kSum> v = sign_and_magnitude(total);
-    mpz_import(out[g].get_mpz_t(), kSum, -1, sizeof(std::uint64_t), 0, 0, v.magnitude.data());
+    const SignedLimbs<N> v = sign_and_magnitude(total);
+    mpz_import(out[g].get_mpz_t(), N, -1, sizeof(std::uint64_t), 0, 0, v.magnitude.data());
     if (v.negative) out[g] = -out[g];
   }
   return out;
@@ -226,9 +242,9 @@ ExactVolumes exact_signed_volumes(const IndexedMesh& mesh,
   const std::size_t parts =
       num_groups > 64 ? 1 : std::clamp<std::size_t>(nf / kMinFacetsAPart, 1, kMaxParts);
 
-  // The scaled coordinates' widths pick the arithmetic: one or two limbs while the products of
-  // three and their sum over every facet fit in a few limbs (the usual case: a model's
-  // coordinates span a few powers of ten), GMP's integers otherwise.
+  // The scaled coordinates' widths pick the arithmetic: four or six limbs while the sum over
+  // every facet fits them (the usual case: a model's coordinates span a few powers of ten, or
+  // some tens of powers of two more where a coordinate is nearly zero), GMP's integers otherwise.
   int widest = 0;
   for (const Dyadic& d : dyadic) {
     if (d.mantissa == 0) continue;
@@ -238,10 +254,11 @@ ExactVolumes exact_signed_volumes(const IndexedMesh& mesh,
     widest = std::max(widest, bits);
   }
   std::vector<mpz_class> sums;
-  if (widest <= kMaxBitsOneLimb) {
-    sums = sum_determinants<1>(mesh, dyadic, min_exponent, group_of_facet, num_groups, parts);
-  } else if (widest <= kMaxBitsTwoLimbs) {
-    sums = sum_determinants<2>(mesh, dyadic, min_exponent, group_of_facet, num_groups, parts);
+  const int sum_bits = 3 * widest + kSumMarginBits;
+  if (sum_bits <= 4 * 64) {
+    sums = sum_determinants<4>(mesh, dyadic, min_exponent, group_of_facet, num_groups, parts);
+  } else if (sum_bits <= 6 * 64) {
+    sums = sum_determinants<6>(mesh, dyadic, min_exponent, group_of_facet, num_groups, parts);
   } else {
     sums = sum_determinants_gmp(mesh, dyadic, min_exponent, group_of_facet, num_groups, parts);
   }

@@ -2,7 +2,7 @@
 
 // Integers of a fixed number of 64-bit limbs, with just the arithmetic an exact sum of
 // determinants needs: GMP's calls cost more than the arithmetic itself when every operand is
-// two limbs long, and a million facets make ten million of them.
+// a few limbs long, and a million facets make six million products of three coordinates.
 
 #include <array>
 #include <cstddef>
@@ -21,20 +21,15 @@ struct SignedLimbs {
   bool negative = false;
 };
 
-/// a b, exact.
-template <std::size_t A, std::size_t B>
-Limbs<A + B> multiply(const Limbs<A>& a, const Limbs<B>& b) {
-  Limbs<A + B> out{};
-  for (std::size_t i = 0; i < A; ++i) {
-    std::uint64_t carry = 0;
-    for (std::size_t j = 0; j < B; ++j) {
-      const unsigned __int128 t = static_cast<unsigned __int128>(a[i]) * b[j] + out[i + j] + carry;
-      out[i + j] = static_cast<std::uint64_t>(t);
-      carry = static_cast<std::uint64_t>(t >> 64);
-    }
-    out[i + B] = carry;
-  }
-  return out;
+/// a b c, exact. @pre a b c < 2^192 (three mantissas of doubles, say).
+inline Limbs<3> multiply(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+  const unsigned __int128 ab = static_cast<unsigned __int128>(a) * b;
+  const unsigned __int128 low = static_cast<unsigned __int128>(static_cast<std::uint64_t>(ab)) * c;
+  const unsigned __int128 high =
+      static_cast<unsigned __int128>(static_cast<std::uint64_t>(ab >> 64)) * c;
+  const unsigned __int128 middle = (low >> 64) + static_cast<std::uint64_t>(high);
+  return {static_cast<std::uint64_t>(low), static_cast<std::uint64_t>(middle),
+          static_cast<std::uint64_t>(high >> 64) + static_cast<std::uint64_t>(middle >> 64)};
 }
 
 /// acc += v modulo 2^(64 N) (two's complement when acc is read as signed). @pre M <= N.
@@ -62,16 +57,6 @@ void subtract_from(Limbs<N>& acc, const Limbs<M>& v) {
   }
 }
 
-/// acc += (negative ? -v : v) modulo 2^(64 N).
-template <std::size_t N, std::size_t M>
-void add_signed(Limbs<N>& acc, const SignedLimbs<M>& v) {
-  if (v.negative) {
-    subtract_from(acc, v.magnitude);
-  } else {
-    add_to(acc, v.magnitude);
-  }
-}
-
 /// Whether a two's complement value is negative.
 template <std::size_t N>
 bool is_negative(const Limbs<N>& v) {
@@ -90,22 +75,57 @@ SignedLimbs<N> sign_and_magnitude(const Limbs<N>& v) {
   return out;
 }
 
-/// a b - c d as two's complement, exact when |a b - c d| < 2^(128 N - 1).
+/// A sum of signed products of three limbs, each shifted into place, modulo 2^(64 N). The carry
+/// out of each product's four limbs is counted, not carried, so that adding a product costs the
+/// same at any shift; and there is no branch on its sign (the signs of a determinant's terms
+/// follow no pattern a predictor could learn).
 template <std::size_t N>
-Limbs<2 * N> cross_difference(const SignedLimbs<N>& a, const SignedLimbs<N>& b,
-                              const SignedLimbs<N>& c, const SignedLimbs<N>& d) {
-  Limbs<2 * N> out{};
-  add_signed(out, SignedLimbs<2 * N>{multiply(a.magnitude, b.magnitude), a.negative != b.negative});
-  add_signed(out, SignedLimbs<2 * N>{multiply(c.magnitude, d.magnitude), c.negative == d.negative});
-  return out;
-}
+class ShiftedProductSum {
+ public:
+  /// Adds (negative ? -v : v) 2^shift. @pre v 2^shift < 2^(64 N); at most 2^62 additions.
+  void add(const Limbs<3>& v, unsigned shift, bool negative) {
+    const unsigned limb = shift / 64;
+    const unsigned bit = shift % 64;
+    // (x >> 1) >> (63 - bit) is x >> (64 - bit), and 0 when bit is 0.
+    const std::array<std::uint64_t, 4> shifted = {
+        v[0] << bit, (v[1] << bit) | ((v[0] >> 1) >> (63 - bit)),
+        (v[2] << bit) | ((v[1] >> 1) >> (63 - bit)), (v[2] >> 1) >> (63 - bit)};
+    // -x is ~x + 1 over every limb: below the four, x's zeros become ones that the 1 carries
+    // through; above them, ones, which are -2^(64 (limb + 4)).
+    const std::uint64_t flip = negative ? ~std::uint64_t{0} : 0;
+    std::uint64_t carry = negative ? 1 : 0;
+    std::uint64_t* at = limbs_.data() + limb;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const unsigned __int128 t =
+          static_cast<unsigned __int128>(at[k]) + (shifted[k] ^ flip) + carry;
+      at[k] = static_cast<std::uint64_t>(t);
+      carry = static_cast<std::uint64_t>(t >> 64);
+    }
+    carries_[limb] += static_cast<std::int64_t>(carry) - (negative ? 1 : 0);
+  }
 
-/// acc += a m, m in two's complement.
-template <std::size_t N, std::size_t A, std::size_t M>
-void add_product(Limbs<N>& acc, const SignedLimbs<A>& a, const Limbs<M>& m) {
-  const SignedLimbs<M> ms = sign_and_magnitude(m);
-  add_signed(acc,
-             SignedLimbs<A + M>{multiply(a.magnitude, ms.magnitude), a.negative != ms.negative});
-}
+  /// The sum modulo 2^(64 N), as two's complement.
+  Limbs<N> total() const {
+    Limbs<N> out{};
+    for (std::size_t i = 0; i < N; ++i) out[i] = limbs_[i];
+    for (std::size_t limb = 0; limb + 4 < N; ++limb) {
+      const std::int64_t count = carries_[limb];
+      const std::uint64_t extension = count < 0 ? ~std::uint64_t{0} : 0;
+      std::uint64_t carry = 0;
+      for (std::size_t i = limb + 4; i < N; ++i) {
+        const unsigned __int128 t =
+            static_cast<unsigned __int128>(out[i]) +
+            (i == limb + 4 ? static_cast<std::uint64_t>(count) : extension) + carry;
+        out[i] = static_cast<std::uint64_t>(t);
+        carry = static_cast<std::uint64_t>(t >> 64);
+      }
+    }
+    return out;
+  }
+
+ private:
+  Limbs<N + 3> limbs_{};                   ///< a product's four limbs start at most at N - 1
+  std::array<std::int64_t, N> carries_{};  ///< carries_[k]: carries into limb k + 4
+};
 
 }  // namespace strata::diagnose::detail

@@ -110,8 +110,8 @@ double nearest_double(const mpq_class& q) {
 }
 
 /// Random facets whose coordinates are m 2^e, |m| < 2^53, e in [-spread, spread]: the spread sets
-/// how wide the coordinates are on one common exponent, and so which arithmetic sums them (one
-/// limb up to 62 bits, two up to 100, GMP's integers beyond).
+/// how wide the coordinates are on one common exponent, and so which arithmetic sums them (four
+/// limbs up to 73 bits, six up to 116, GMP's integers beyond).
 IndexedMesh random_facets(int spread, std::uint32_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<std::int64_t> mantissa(-(std::int64_t{1} << 53) + 1,
@@ -132,8 +132,9 @@ IndexedMesh random_facets(int spread, std::uint32_t seed) {
 }
 
 TEST(ExactSignedVolumes, EveryArithmeticSumsAsRationalsDo) {
-  // spread 2: at most 57 bits (one limb); 20: up to 93 (two limbs); 40: up to 133 (GMP).
-  for (const int spread : {2, 20, 40}) {
+  // spread 2: at most 57 bits (four limbs); 10: up to 73, four limbs' limit; 20: up to 93 (six
+  // limbs); 31: up to 115, near six limbs' limit; 40: up to 133 (GMP).
+  for (const int spread : {2, 10, 20, 31, 40}) {
     {
       const auto seed = static_cast<std::uint32_t>(spread);
       const IndexedMesh mesh = random_facets(spread, seed);
