@@ -36,16 +36,25 @@ struct Dyadic {
   int exponent = 0;
 };
 
+/// @pre x finite. Read from the double's bits: frexp and ldexp are calls into the C library, and
+/// a million facets' vertices make a million and a half coordinates.
 Dyadic to_dyadic(double x) {
   if (x == 0.0) return {};
-  int e = 0;
-  const double m = std::frexp(x, &e);  // x = m * 2^e, 0.5 <= |m| < 1
-  auto mantissa = static_cast<std::int64_t>(std::ldexp(m, 53));
-  int exponent = e - 53;
-  const int zeros = std::countr_zero(static_cast<std::uint64_t>(std::llabs(mantissa)));
-  mantissa >>= zeros;  // exact: the low bits are zero
+  constexpr int kFractionBits = 52;
+  constexpr int kExponentBias = 1023 + kFractionBits;  // of the integer mantissa
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  const int biased = static_cast<int>((bits >> kFractionBits) & 0x7FF);
+  std::uint64_t magnitude = bits & ((std::uint64_t{1} << kFractionBits) - 1);
+  int exponent = 1 - kExponentBias;  // subnormal: no implicit leading bit
+  if (biased != 0) {
+    magnitude |= std::uint64_t{1} << kFractionBits;
+    exponent = biased - kExponentBias;
+  }
+  const int zeros = std::countr_zero(magnitude);
+  magnitude >>= zeros;  // exact: the low bits are zero
   exponent += zeros;
-  return {mantissa, exponent};
+  const auto mantissa = static_cast<std::int64_t>(magnitude);
+  return {(bits >> 63) != 0 ? -mantissa : mantissa, exponent};
 }
 
 double round_to_double(const mpz_class& sum, int scale_exponent) {

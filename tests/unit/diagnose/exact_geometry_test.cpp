@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -160,6 +161,28 @@ TEST(ExactSignedVolumes, EveryArithmeticSumsAsRationalsDo) {
       EXPECT_EQ(v.total_mm3, nearest_double(total / 6)) << "spread " << spread;
     }
   }
+}
+
+TEST(ExactSignedVolumes, SubnormalAndNegativeCoordinatesSumAsRationalsDo) {
+  // The coordinates are read from their bits: subnormal ones have no implicit leading bit.
+  IndexedMesh mesh;
+  mesh.vertices = {{5e-324, -1.0, 0.0},
+                   {-3e-310, 1.0, 0.75},
+                   {2.0, -2.5e-320, -1.0},
+                   {-0.1, 0.3, std::numeric_limits<double>::min()}};
+  mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 3, 2}, {3, 1, 0}};
+  mpq_class expected;
+  for (const auto& t : mesh.triangles) {
+    const Vec3& a = mesh.vertices[t[0]];
+    const Vec3& b = mesh.vertices[t[1]];
+    const Vec3& c = mesh.vertices[t[2]];
+    expected += mpq_class(a.x) * (mpq_class(b.y) * c.z - mpq_class(b.z) * c.y) +
+                mpq_class(a.y) * (mpq_class(b.z) * c.x - mpq_class(b.x) * c.z) +
+                mpq_class(a.z) * (mpq_class(b.x) * c.y - mpq_class(b.y) * c.x);
+  }
+  const ExactVolumes v = exact_signed_volumes(mesh, std::vector<std::uint32_t>(4, 0), 1);
+  EXPECT_EQ(v.total_mm3, nearest_double(expected / 6));
+  EXPECT_NE(v.total_mm3, 0.0);
 }
 
 }  // namespace
