@@ -5,8 +5,10 @@
 #include <mpfr.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <climits>
 #include <cmath>
@@ -57,6 +59,10 @@ Dyadic to_dyadic(double x) {
   return {(bits >> 63) != 0 ? -mantissa : mantissa, exponent};
 }
 
+std::array<Dyadic, 3> to_dyadic(const Vec3& p) {
+  return {to_dyadic(p.x), to_dyadic(p.y), to_dyadic(p.z)};
+}
+
 double round_to_double(const mpz_class& sum, int scale_exponent) {
   // value = sum * 2^scale_exponent / 6, rounded once.
   mpq_class q(sum, 6);
@@ -91,17 +97,22 @@ constexpr int kSumMarginBits = 36;
 /// grow with how far apart the coordinates' exponents are.
 /// @pre 3 w + kSumMarginBits <= 64 N for coordinates of w bits on the common unit.
 template <std::size_t N>
-std::vector<mpz_class> sum_determinants(const IndexedMesh& mesh, const std::vector<Dyadic>& dyadic,
-                                        int min_exponent,
+std::vector<mpz_class> sum_determinants(const IndexedMesh& mesh, int min_exponent,
                                         const std::vector<std::uint32_t>& group_of_facet,
                                         std::size_t num_groups, std::size_t parts) {
-  std::vector<ScaledCoordinate> coord(dyadic.size());
-  for (std::size_t i = 0; i < dyadic.size(); ++i) {
-    const Dyadic& d = dyadic[i];
-    if (d.mantissa == 0) continue;
-    coord[i] = {static_cast<std::uint64_t>(std::llabs(d.mantissa)),
-                static_cast<std::uint32_t>(d.exponent - min_exponent), d.mantissa < 0};
-  }
+  const std::size_t nv = mesh.vertices.size();
+  std::vector<ScaledCoordinate> coord(3 * nv);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 4096), [&](const auto& range) {
+    for (std::size_t v = range.begin(); v < range.end(); ++v) {
+      const std::array<Dyadic, 3> p = to_dyadic(mesh.vertices[v]);
+      for (std::size_t k = 0; k < 3; ++k) {
+        if (p[k].mantissa == 0) continue;
+        coord[3 * v + k] = {static_cast<std::uint64_t>(std::llabs(p[k].mantissa)),
+                            static_cast<std::uint32_t>(p[k].exponent - min_exponent),
+                            p[k].mantissa < 0};
+      }
+    }
+  });
   const std::size_t nf = mesh.triangles.size();
   std::vector<std::vector<Limbs<N>>> part_sums(parts, std::vector<Limbs<N>>(num_groups));
   tbb::parallel_for(std::size_t{0}, parts, [&](std::size_t part) {
@@ -150,19 +161,21 @@ std::vector<mpz_class> sum_determinants(const IndexedMesh& mesh, const std::vect
 }
 
 /// sum_determinants on GMP's integers, for coordinates of any width.
-std::vector<mpz_class> sum_determinants_gmp(const IndexedMesh& mesh,
-                                            const std::vector<Dyadic>& dyadic, int min_exponent,
+std::vector<mpz_class> sum_determinants_gmp(const IndexedMesh& mesh, int min_exponent,
                                             const std::vector<std::uint32_t>& group_of_facet,
                                             std::size_t num_groups, std::size_t parts) {
-  const std::size_t nv3 = dyadic.size();
-  std::vector<mpz_class> coord(nv3);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv3, 4096), [&](const auto& range) {
-    for (std::size_t i = range.begin(); i < range.end(); ++i) {
-      const Dyadic& d = dyadic[i];
-      if (d.mantissa == 0) continue;
-      coord[i] = static_cast<long>(d.mantissa);
-      mpz_mul_2exp(coord[i].get_mpz_t(), coord[i].get_mpz_t(),
-                   static_cast<mp_bitcnt_t>(d.exponent - min_exponent));
+  const std::size_t nv = mesh.vertices.size();
+  std::vector<mpz_class> coord(3 * nv);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 4096), [&](const auto& range) {
+    for (std::size_t v = range.begin(); v < range.end(); ++v) {
+      const std::array<Dyadic, 3> p = to_dyadic(mesh.vertices[v]);
+      for (std::size_t k = 0; k < 3; ++k) {
+        if (p[k].mantissa == 0) continue;
+        mpz_class& c = coord[3 * v + k];
+        c = static_cast<long>(p[k].mantissa);
+        mpz_mul_2exp(c.get_mpz_t(), c.get_mpz_t(),
+                     static_cast<mp_bitcnt_t>(p[k].exponent - min_exponent));
+      }
     }
   });
   const std::size_t nf = mesh.triangles.size();
@@ -223,21 +236,30 @@ ExactVolumes exact_signed_volumes(const IndexedMesh& mesh,
                                   std::size_t num_groups) {
   STRATA_ASSERT(group_of_facet.size() == mesh.triangles.size(), "one group per facet");
   // All coordinates become integers times one common power of two, so the determinants are
-  // integer products and the sums need no gcd: exact and fast.
-  const std::size_t nv = mesh.vertices.size();
-  std::vector<Dyadic> dyadic(3 * nv);
-  int min_exponent = INT_MAX;
-  for (std::size_t i = 0; i < nv; ++i) {
-    const Vec3& p = mesh.vertices[i];
-    dyadic[3 * i] = to_dyadic(p.x);
-    dyadic[3 * i + 1] = to_dyadic(p.y);
-    dyadic[3 * i + 2] = to_dyadic(p.z);
-    for (int k = 0; k < 3; ++k) {
-      if (dyadic[3 * i + k].mantissa != 0) {
-        min_exponent = std::min(min_exponent, dyadic[3 * i + k].exponent);
-      }
-    }
-  }
+  // integer products and the sums need no gcd: exact and fast. The power is the lowest bit of
+  // any non-zero coordinate; the highest bit sets how wide the integers are.
+  struct BitSpan {
+    int lowest = INT_MAX;
+    int above_highest = INT_MIN;
+  };
+  const BitSpan span = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, mesh.vertices.size(), 4096), BitSpan{},
+      [&](const auto& range, BitSpan found) {
+        for (std::size_t v = range.begin(); v < range.end(); ++v) {
+          for (const Dyadic& d : to_dyadic(mesh.vertices[v])) {
+            if (d.mantissa == 0) continue;
+            const auto width = static_cast<int>(
+                std::bit_width(static_cast<std::uint64_t>(std::llabs(d.mantissa))));
+            found.lowest = std::min(found.lowest, d.exponent);
+            found.above_highest = std::max(found.above_highest, d.exponent + width);
+          }
+        }
+        return found;
+      },
+      [](const BitSpan& a, const BitSpan& b) {
+        return BitSpan{std::min(a.lowest, b.lowest), std::max(a.above_highest, b.above_highest)};
+      });
+  const int min_exponent = span.lowest;
   ExactVolumes result;
   result.by_group_mm3.assign(num_groups, 0.0);
   if (min_exponent == INT_MAX) return result;  // every coordinate is zero
@@ -254,22 +276,15 @@ ExactVolumes exact_signed_volumes(const IndexedMesh& mesh,
   // The scaled coordinates' widths pick the arithmetic: four or six limbs while the sum over
   // every facet fits them (the usual case: a model's coordinates span a few powers of ten, or
   // some tens of powers of two more where a coordinate is nearly zero), GMP's integers otherwise.
-  int widest = 0;
-  for (const Dyadic& d : dyadic) {
-    if (d.mantissa == 0) continue;
-    const int bits =
-        static_cast<int>(std::bit_width(static_cast<std::uint64_t>(std::llabs(d.mantissa)))) +
-        (d.exponent - min_exponent);
-    widest = std::max(widest, bits);
-  }
+  const int widest = span.above_highest - min_exponent;
   std::vector<mpz_class> sums;
   const int sum_bits = 3 * widest + kSumMarginBits;
   if (sum_bits <= 4 * 64) {
-    sums = sum_determinants<4>(mesh, dyadic, min_exponent, group_of_facet, num_groups, parts);
+    sums = sum_determinants<4>(mesh, min_exponent, group_of_facet, num_groups, parts);
   } else if (sum_bits <= 6 * 64) {
-    sums = sum_determinants<6>(mesh, dyadic, min_exponent, group_of_facet, num_groups, parts);
+    sums = sum_determinants<6>(mesh, min_exponent, group_of_facet, num_groups, parts);
   } else {
-    sums = sum_determinants_gmp(mesh, dyadic, min_exponent, group_of_facet, num_groups, parts);
+    sums = sum_determinants_gmp(mesh, min_exponent, group_of_facet, num_groups, parts);
   }
   mpz_class total;
   const int scale = 3 * min_exponent;
