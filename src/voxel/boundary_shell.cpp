@@ -88,8 +88,12 @@ struct GridAxis {
   /// a caller that checks what it takes (a centre it misses is left to the exact test).
   std::pair<std::int64_t, std::int64_t> centres_within(double lo, double hi) const {
     const double last = static_cast<double>(n) - 1.0;
-    return {ceil_index(std::clamp((lo - base) * inv_d - 0.5, 0.0, last + 1.0)),
-            floor_index(std::clamp((hi - base) * inv_d - 0.5, -1.0, last))};
+    // Bounded so that the casts hold; a NaN takes the lower bound, an empty range.
+    const auto bounded = [](double v, double low, double high) {
+      return v >= low ? (v <= high ? v : high) : low;
+    };
+    return {ceil_index(bounded((lo - base) * inv_d - 0.5, 0.0, last + 1.0)),
+            floor_index(bounded((hi - base) * inv_d - 0.5, -1.0, last))};
   }
 };
 
