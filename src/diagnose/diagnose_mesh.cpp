@@ -12,7 +12,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <numeric>
+#include <span>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -40,45 +42,88 @@ const char* verdict_name(Verdict verdict) {
 
 namespace {
 
-/// Counts occurrences and keeps the `limit` with the smallest keys (ties: first added).
-template <class T>
-class FirstOccurrences {
+/// Which occurrences FirstOccurrences keeps, the `limit` with the smallest keys (ties: first
+/// added), and how many there were. Not a template, so that coverage counts its branches once
+/// rather than once for each type of location.
+class FirstKeys {
  public:
-  explicit FirstOccurrences(std::size_t limit) : limit_(limit) {}
+  /// Called to put the kept locations in a new order: slot order[i] becomes slot i + 1.
+  using Reorder = void (*)(void* owner, std::span<const std::size_t> order);
 
-  void add(std::uint64_t key, const T& location) {
+  explicit FirstKeys(std::size_t limit) : limit_(limit) {}
+
+  /// Counts an occurrence with `key`; returns the slot its location goes to (1, 2, ...), or 0,
+  /// a slot of scratch, when it cannot be among the first.
+  std::size_t add(std::uint64_t key, Reorder reorder, void* owner) {
     ++count_;
+    if (items_.size() >= 4 * std::max<std::size_t>(limit_, 1)) trim(reorder, owner);
     // Keys mostly come in increasing order: once `limit` are kept, a key after them all cannot
     // be among the first (ties keep the first added), and a million defects cost no sorts.
     if (sorted_ && items_.size() >= limit_ && (items_.empty() || key >= items_.back().first)) {
-      return;
+      return 0;
     }
     if (!items_.empty() && key < items_.back().first) sorted_ = false;
-    items_.push_back({key, location});
-    if (items_.size() >= 4 * std::max<std::size_t>(limit_, 1)) trim();
+    items_.push_back({key, items_.size() + 1});
+    return items_.size();
+  }
+
+  /// The slots in use, scratch included.
+  std::size_t slots() const { return items_.size() + 1; }
+  std::size_t count() const { return count_; }
+
+  void trim(Reorder reorder, void* owner) {
+    std::stable_sort(items_.begin(), items_.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    if (items_.size() > limit_) items_.resize(limit_);
+    std::vector<std::size_t> order(items_.size());
+    for (std::size_t i = 0; i < items_.size(); ++i) {
+      order[i] = items_[i].second;
+      items_[i].second = i + 1;
+    }
+    reorder(owner, order);
+    sorted_ = true;
+  }
+
+ private:
+  std::size_t limit_;
+  std::size_t count_ = 0;
+  bool sorted_ = true;  ///< items_ are in increasing order of their keys
+  std::vector<std::pair<std::uint64_t, std::size_t>> items_;  ///< key, slot
+};
+
+/// Counts occurrences and keeps the locations of the `limit` with the smallest keys (ties: first
+/// added). Its own code has no branch: FirstKeys decides.
+template <class T>
+class FirstOccurrences {
+ public:
+  explicit FirstOccurrences(std::size_t limit) : keys_(limit), locations_(1) {}
+
+  void add(std::uint64_t key, const T& location) {
+    const std::size_t slot = keys_.add(key, &reorder, this);
+    locations_.resize(keys_.slots());
+    locations_[slot] = location;
   }
 
   Occurrences<T> finish() {
-    trim();
+    keys_.trim(&reorder, this);
     Occurrences<T> out;
-    out.count = count_;
-    out.locations.reserve(items_.size());
-    for (const auto& item : items_) out.locations.push_back(item.second);
+    out.count = keys_.count();
+    out.locations.assign(std::make_move_iterator(locations_.begin() + 1),
+                         std::make_move_iterator(locations_.end()));
     return out;
   }
 
  private:
-  void trim() {
-    std::stable_sort(items_.begin(), items_.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    if (items_.size() > limit_) items_.resize(limit_);
-    sorted_ = true;
+  static void reorder(void* owner, std::span<const std::size_t> order) {
+    auto& self = *static_cast<FirstOccurrences*>(owner);
+    std::vector<T> kept(order.size() + 1);
+    std::transform(order.begin(), order.end(), kept.begin() + 1,
+                   [&](std::size_t slot) { return std::move(self.locations_[slot]); });
+    self.locations_ = std::move(kept);
   }
 
-  std::size_t limit_;
-  std::size_t count_ = 0;
-  bool sorted_ = true;  ///< items_ are in increasing order of their keys
-  std::vector<std::pair<std::uint64_t, T>> items_;
+  FirstKeys keys_;
+  std::vector<T> locations_;  ///< by slot; slot 0 is scratch
 };
 
 class UnionFind {
