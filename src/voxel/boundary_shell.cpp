@@ -32,9 +32,11 @@ std::int64_t floor_index(double x) {
   return static_cast<double>(i) > x ? i - 1 : i;
 }
 
-/// The lowest n bits set, n in [0, 64].
-std::uint64_t low_bits(std::size_t n) {
-  return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
+/// The bits of columns first .. last of a word whose bit 0 is column `base` (base <= first <=
+/// last < base + 64).
+std::uint64_t run_bits(std::int64_t first, std::int64_t last, std::int64_t base) {
+  const std::int64_t n = last - first + 1;
+  return (n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1) << (first - base);
 }
 
 /// Bit i set when cells[i] is Interior, for i < 64 and i < available (the cells there are).
@@ -100,6 +102,16 @@ struct GridAxis {
 /// The x-y bounding box of the part of triangle abc within z in [z_lo, z_hi]; false if none.
 bool slab_footprint(const Vec3& a, const Vec3& b, const Vec3& c, double z_lo, double z_hi,
                     double box[4]) {
+  const double z_min = std::min({a.z, b.z, c.z});
+  const double z_max = std::max({a.z, b.z, c.z});
+  if (z_min >= z_lo && z_max <= z_hi) {
+    // Within the slab (most facets of a fine mesh): the footprint is the facet's own box.
+    box[0] = std::min({a.x, b.x, c.x});
+    box[1] = std::min({a.y, b.y, c.y});
+    box[2] = std::max({a.x, b.x, c.x});
+    box[3] = std::max({a.y, b.y, c.y});
+    return true;
+  }
   box[0] = box[1] = std::numeric_limits<double>::infinity();
   box[2] = box[3] = -std::numeric_limits<double>::infinity();
   bool any = false;
@@ -298,8 +310,9 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
   // A patch's slab serves every layer: the facets a layer tests are some of the patch's.
   tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t q) {
     Patch& patch = patches[q];
-    patch.slab = slab_of(std::span(triangles_by_patch_).subspan(patch.begin, patch.end - patch.begin),
-                         vertices_by_patch_);
+    patch.slab =
+        slab_of(std::span(triangles_by_patch_).subspan(patch.begin, patch.end - patch.begin),
+                vertices_by_patch_);
   });
   std::sort(patches.begin(), patches.end(), [](const Patch& a, const Patch& b) {
     return a.zmin != b.zmin ? a.zmin < b.zmin : a.begin < b.begin;
@@ -387,15 +400,7 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
       const double z_min = std::min({a.z, b.z, c.z});
       const double z_max = std::max({a.z, b.z, c.z});
       if (z_max < z_lo || z_min > z_hi) continue;
-      if (z_min >= z_lo && z_max <= z_hi) {
-        // Within the slab (most facets of a fine mesh): the footprint is the facet's own box.
-        box[0] = std::min({a.x, b.x, c.x});
-        box[1] = std::min({a.y, b.y, c.y});
-        box[2] = std::max({a.x, b.x, c.x});
-        box[3] = std::max({a.y, b.y, c.y});
-      } else if (!slab_footprint(a, b, c, z_lo, z_hi, box)) {
-        continue;
-      }
+      if (!slab_footprint(a, b, c, z_lo, z_hi, box)) continue;
       // A point closer than t to the facet is closer than sqrt(t^2 - gap^2) to it across the
       // layer, gap being the facet's z-distance from the layer's plane: the far layers of the
       // slab search a narrower box. The margins only widen it.
@@ -415,13 +420,12 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
       mark_near_wide_facet(a, b, c, z, box, grow, i0_box, i1_box, j0, j1, out);
     }
     if (small.empty()) continue;
-    mark_near_small_facets(small, patch, z, out);
+    mark_near_small_facets(small, patch.slab, z, out);
   }
 }
 
-void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, const Patch& patch,
+void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, const Slab& slab,
                                            double z, std::vector<CellClass>& out) const {
-  const Slab& slab = patch.slab;
   const double t = thickness_mm_;
   const std::uint32_t nx = grid_.nx;
   std::int64_t pi0 = facets[0].i0, pi1 = facets[0].i1, pj0 = facets[0].j0, pj1 = facets[0].j1;
@@ -490,8 +494,7 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
       }
       std::uint64_t keep = 0;
       if (i0 <= i1) {
-        const std::int64_t span = i1 - i0 + 1;
-        keep = low_bits(static_cast<std::size_t>(span)) << (i0 - pi0);
+        keep = run_bits(i0, i1, pi0);
       }
       interior[r] &= keep;
     }
@@ -505,8 +508,7 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
   const std::int64_t beyond_words = pj0 + kMaxPatchRows;
   for (const FacetReach& facet : facets) {
     filter.reset();
-    const std::uint64_t span = facet.i1 - facet.i0 + 1;
-    const std::uint64_t in_box = low_bits(span) << (facet.i0 - pi0);
+    const std::uint64_t in_box = run_bits(facet.i0, facet.i1, pi0);
     const std::int64_t j_end = std::min(facet.j1, pj0 + last_row);
     for (std::int64_t j = std::max(facet.j0, pj0 + first_row); j <= j_end; ++j) {
       const std::int64_t r = j - pj0;
@@ -536,19 +538,18 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
 void BoundaryShell::gather_interior(const std::vector<CellClass>& cells, std::int64_t pi0,
                                     std::int64_t pi1, std::int64_t pj0, std::int64_t rows,
                                     std::uint64_t* interior) const {
-  const std::size_t width = static_cast<std::size_t>(pi1 - pi0 + 1);
+  const std::uint64_t columns = run_bits(pi0, pi1, pi0);
   for (std::int64_t r = 0; r < rows; ++r) {
     const std::size_t at =
         static_cast<std::size_t>(pj0 + r) * grid_.nx + static_cast<std::size_t>(pi0);
-    interior[r] = interior_bits(cells.data() + at, std::min<std::size_t>(64, cells.size() - at)) &
-                  low_bits(width);
+    interior[r] =
+        interior_bits(cells.data() + at, std::min<std::size_t>(64, cells.size() - at)) & columns;
   }
 }
 
 void BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, double z, std::int64_t pi0,
                                        std::int64_t pi1, std::int64_t pj0, std::int64_t rows,
-                                       std::uint64_t* interior,
-                                       std::vector<CellClass>& out) const {
+                                       std::uint64_t* interior, std::vector<CellClass>& out) const {
   const double t = thickness_mm_;
   const double t2 = t * t;
   const std::uint32_t nx = grid_.nx;
@@ -577,8 +578,7 @@ void BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, double z,
     if (r0 > r1 || b0 > b1) continue;
     // The columns the vertex reaches: a row with no interior cell among them is passed by
     // (most rows, once the first vertices of the patch have marked their cells).
-    const std::int64_t columns = b1 - b0 + 1;
-    const std::uint64_t reached = low_bits(static_cast<std::size_t>(columns)) << (b0 - pi0);
+    const std::uint64_t reached = run_bits(b0, b1, pi0);
     for (std::int64_t r = r0; r <= r1; ++r) {
       if ((interior[r] & reached) == 0) continue;
       const double dy = grid_.yc(static_cast<std::uint32_t>(pj0 + r)) - v.y;
@@ -596,8 +596,7 @@ void BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, double z,
         --i1;
       }
       if (i0 > i1) continue;
-      const std::int64_t width = i1 - i0 + 1;
-      const std::uint64_t run = low_bits(static_cast<std::size_t>(width)) << (i0 - pi0);
+      const std::uint64_t run = run_bits(i0, i1, pi0);
       std::uint64_t hits = interior[r] & run;
       interior[r] &= ~run;
       CellClass* row = out.data() + static_cast<std::size_t>(pj0 + r) * nx;

@@ -65,9 +65,8 @@ class BoundaryShell {
   };
   static Slab slab_of(std::span<const std::array<VertexIndex, 3>> triangles,
                       const std::vector<Vec3>& vertices);
-  struct Patch;
-  /// The small facets of a patch, tested over the patch's box.
-  void mark_near_small_facets(std::span<const FacetReach> facets, const Patch& patch, double z,
+  /// The small facets of a patch, tested over the patch's box; `slab` holds the patch's facets.
+  void mark_near_small_facets(std::span<const FacetReach> facets, const Slab& slab, double z,
                               std::vector<CellClass>& out) const;
   /// The interior cells of rows pj0 .. pj0 + rows - 1, columns pi0 .. pi1 (at most 64), as bits.
   void gather_interior(const std::vector<CellClass>& cells, std::int64_t pi0, std::int64_t pi1,
@@ -104,8 +103,10 @@ class BoundaryShell {
     /// The vertices its facets use first (in vertices_by_patch_): each vertex is in one patch.
     std::uint32_t vertex_begin = 0, vertex_end = 0;
     /// The x-y box of those vertices (z unused); empty when there are none.
-    Vec3 vertex_lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), 0.0};
-    Vec3 vertex_hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), 0.0};
+    Vec3 vertex_lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                   0.0};
+    Vec3 vertex_hi{-std::numeric_limits<double>::infinity(),
+                   -std::numeric_limits<double>::infinity(), 0.0};
     double zmin = 0.0, zmax = 0.0;
     Slab slab;
   };
