@@ -9,12 +9,12 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "export/grey_png_internal.hpp"
 #include "strata/io/read_mesh.hpp"
 #include "strata/mesh/weld_vertices.hpp"
 #include "strata/slice/slice_float.hpp"
 #include "strata/slicer/slice_model.hpp"
 #include "strata/voxel/boundary_shell.hpp"
-#include "export/grey_png_internal.hpp"
 
 namespace {
 
@@ -115,7 +115,8 @@ std::vector<std::uint8_t> ring_layer_rows() {
   for (int j = 0; j < kSide; ++j) {
     for (int i = 0; i < kSide; ++i) {
       const double from_rim = std::fabs(std::hypot(i - 550.0, j - 550.0) - 400.0);
-      rows[std::size_t(j) * (kSide + 1) + 1 + i] = from_rim < 150 ? (from_rim > 145 ? 255 : 128) : 0;
+      rows[std::size_t(j) * (kSide + 1) + 1 + i] =
+          from_rim < 150 ? (from_rim > 145 ? 255 : 128) : 0;
     }
   }
   return rows;

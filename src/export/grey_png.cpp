@@ -18,15 +18,14 @@ constexpr std::uint32_t kWindow = 32768;
 constexpr std::array<std::uint16_t, 29> kLengthBase = {3,  4,  5,  6,   7,   8,   9,   10,  11, 13,
                                                        15, 17, 19, 23,  27,  31,  35,  43,  51, 59,
                                                        67, 83, 99, 115, 131, 163, 195, 227, 258};
-constexpr std::array<std::uint8_t, 29> kLengthExtra = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1,
-                                                       1, 1, 2, 2, 2, 2, 3, 3, 3, 3,
-                                                       4, 4, 4, 4, 5, 5, 5, 5, 0};
+constexpr std::array<std::uint8_t, 29> kLengthExtra = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
+                                                       2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
 /// Distance codes 0 .. 29: the first distance of each and its extra bits.
 constexpr std::array<std::uint16_t, 30> kDistanceBase = {
     1,   2,   3,   4,   5,   7,    9,    13,   17,   25,   33,   49,   65,    97,    129,
     193, 257, 385, 513, 769, 1025, 1537, 2049, 3073, 4097, 6145, 8193, 12289, 16385, 24577};
-constexpr std::array<std::uint8_t, 30> kDistanceExtra = {0, 0, 0, 0, 1, 1, 2,  2,  3,  3,
-                                                         4, 4, 5, 5, 6, 6, 7,  7,  8,  8,
+constexpr std::array<std::uint8_t, 30> kDistanceExtra = {0, 0, 0,  0,  1,  1,  2,  2,  3,  3,
+                                                         4, 4, 5,  5,  6,  6,  7,  7,  8,  8,
                                                          9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
 
 /// The index of the last base not above `value` (value at least bases[0]).
@@ -45,41 +44,37 @@ constexpr std::uint32_t reversed(std::uint32_t code, int length) {
   return out;
 }
 
-/// Bits ready for BitWriter::put: a Huffman code and the extra bits after it.
-struct Bits {
-  std::uint32_t value = 0;
-  int count = 0;
-};
-
 /// The fixed code of a literal byte (RFC 1951 §3.2.6).
-constexpr Bits literal_bits(std::uint32_t byte) {
-  return byte < 144 ? Bits{reversed(0x30U + byte, 8), 8} : Bits{reversed(0x190U + byte - 144, 9), 9};
+constexpr DeflateCode literal_code(std::uint32_t byte) {
+  return byte < 144 ? DeflateCode{reversed(0x30U + byte, 8), 8}
+                    : DeflateCode{reversed(0x190U + byte - 144, 9), 9};
 }
 
 /// A match length 3 .. 258: its symbol's fixed code and the extra bits.
-constexpr Bits length_bits(std::uint32_t length) {
+constexpr DeflateCode length_code(std::uint32_t length) {
   const std::size_t l = code_of(kLengthBase, length);
   const std::uint32_t symbol = 257 + static_cast<std::uint32_t>(l);
-  const Bits code = symbol < 280 ? Bits{reversed(symbol - 256, 7), 7}
-                                 : Bits{reversed(0xC0U + symbol - 280, 8), 8};
-  return {code.value | (length - kLengthBase[l]) << code.count, code.count + kLengthExtra[l]};
+  const DeflateCode code = symbol < 280 ? DeflateCode{reversed(symbol - 256, 7), 7}
+                                        : DeflateCode{reversed(0xC0U + symbol - 280, 8), 8};
+  return {code.bits | (length - kLengthBase[l]) << code.count, code.count + kLengthExtra[l]};
 }
 
 /// A distance 1 .. 32768: its code (five bits) and the extra bits.
-constexpr Bits distance_bits(std::uint32_t distance) {
+constexpr DeflateCode distance_code(std::uint32_t distance) {
   const std::size_t d = code_of(kDistanceBase, distance);
   return {reversed(static_cast<std::uint32_t>(d), 5) | (distance - kDistanceBase[d]) << 5,
           5 + kDistanceExtra[d]};
 }
 
 template <class Make, std::size_t N>
-constexpr std::array<Bits, N> table(Make make, std::uint32_t first) {
-  std::array<Bits, N> out{};
+constexpr std::array<DeflateCode, N> table(Make make, std::uint32_t first) {
+  std::array<DeflateCode, N> out{};
   for (std::size_t i = 0; i < N; ++i) out[i] = make(first + static_cast<std::uint32_t>(i));
   return out;
 }
-constexpr auto kLiteralBits = table<decltype(&literal_bits), 256>(&literal_bits, 0);
-constexpr auto kLengthBits = table<decltype(&length_bits), 256>(&length_bits, 3);  // 3 .. 258
+constexpr auto kLiteralCodes = table<decltype(&literal_code), 256>(&literal_code, 0);
+constexpr auto kLengthCodes = table<decltype(&length_code), 256>(&length_code, 3);  // 3 .. 258
+constexpr DeflateCode kDistanceOne = distance_code(1);
 
 /// n (n + 1) / 2 modulo the Adler modulus, without overflow.
 std::uint64_t triangle_mod(std::uint64_t n) {
@@ -118,15 +113,14 @@ void put_chunk(std::string& out, const char* type, std::string_view data) {
 
 }  // namespace
 
-
 RowDeflater::RowDeflater(std::size_t row_bytes, std::string& out)
-    : row_bytes_(row_bytes), out_(out), bits_(out), previous_(row_bytes) {
-  const Bits one = distance_bits(1);
-  const Bits row = distance_bits(static_cast<std::uint32_t>(std::clamp<std::size_t>(row_bytes, 1, kWindow)));
-  distance_one_ = one.value;
-  distance_one_bits_ = one.count;
-  distance_row_ = row.value;
-  distance_row_bits_ = row.count;
+    : row_bytes_(row_bytes),
+      out_(out),
+      bits_(out),
+      previous_(row_bytes),
+      // Rows longer than the window are never copied: their distance is not used.
+      row_distance_(distance_code(
+          static_cast<std::uint32_t>(std::clamp<std::size_t>(row_bytes, 1, kWindow)))) {
   // zlib header: deflate with a 32 KiB window, no dictionary, a check that makes it a multiple
   // of 31; then one final block of fixed Huffman codes.
   out_.push_back(static_cast<char>(0x78));
@@ -135,27 +129,22 @@ RowDeflater::RowDeflater(std::size_t row_bytes, std::string& out)
   bits_.put(1, 2);
 }
 
-void RowDeflater::literal(std::uint8_t byte) {
-  bits_.put(kLiteralBits[byte].value, kLiteralBits[byte].count);
-}
+void RowDeflater::literal(std::uint8_t byte) { bits_.put(kLiteralCodes[byte]); }
 
-void RowDeflater::copies(std::uint64_t length, bool from_row_above) {
-  const std::uint32_t distance = from_row_above ? distance_row_ : distance_one_;
-  const int distance_count = from_row_above ? distance_row_bits_ : distance_one_bits_;
+void RowDeflater::copies(std::uint64_t length, DeflateCode distance) {
   while (length > 0) {
     std::uint64_t take = std::min<std::uint64_t>(length, kMaxMatch);
     // A match is 3 bytes at least: leave the last piece three.
     if (length > kMaxMatch && length - take < 3) take = length - 3;
-    const Bits& n = kLengthBits[take - 3];
-    bits_.put(n.value, n.count);
-    bits_.put(distance, distance_count);
+    bits_.put(kLengthCodes[take - 3]);
+    bits_.put(distance);
     length -= take;
   }
 }
 
 void RowDeflater::flush_run() {
   if (run_ >= 3) {
-    copies(run_, false);
+    copies(run_, kDistanceOne);
   } else {
     for (std::uint64_t i = 0; i < run_; ++i) literal(last_);
   }
@@ -172,7 +161,7 @@ void RowDeflater::add_row(const std::uint8_t* row) {
   if (has_previous_ && n >= 3 && n <= kWindow && std::memcmp(row, previous_.data(), n) == 0) {
     // The row above again: copies of it, and its sums added to the checksum's.
     flush_run();
-    copies(n, true);
+    copies(n, row_distance_);
     const std::uint64_t length = n % kAdlerModulus;
     adler_b_ = static_cast<std::uint32_t>((adler_b_ + length * adler_a_ + row_b_) % kAdlerModulus);
     adler_a_ = (adler_a_ + row_a_) % kAdlerModulus;
@@ -225,11 +214,7 @@ GreyPngEncoder::GreyPngEncoder(std::uint32_t width, std::uint32_t height,
       row_(std::size_t{width} + 1, 0),
       deflater_(std::size_t{width} + 1, idat_) {}
 
-void GreyPngEncoder::add_row(const std::uint8_t* grey) {
-  // Filter type 0 (none): on three grey levels in long runs the others only add work.
-  std::memcpy(row_.data() + 1, grey, width_);
-  deflater_.add_row(row_.data());
-}
+void GreyPngEncoder::add_row() { deflater_.add_row(row_.data()); }
 
 std::string GreyPngEncoder::finish() {
   deflater_.finish();

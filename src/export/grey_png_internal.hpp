@@ -14,6 +14,13 @@
 
 namespace strata::io::detail {
 
+/// Bits ready to append: a Huffman code (already reversed, as deflate stores it) and the extra
+/// bits after it, `count` in all.
+struct DeflateCode {
+  std::uint32_t bits = 0;
+  int count = 0;
+};
+
 /// Appends deflate codes to a string, least significant bit first (RFC 1951 §3.1.1).
 class BitWriter {
  public:
@@ -28,6 +35,7 @@ class BitWriter {
       filled_ -= 8;
     }
   }
+  void put(DeflateCode code) { put(code.bits, code.count); }
   /// Pads the last byte with zero bits.
   void flush() {
     if (filled_ > 0) out_.push_back(static_cast<char>(pending_ & 0xFFu));
@@ -50,8 +58,8 @@ class RowDeflater {
 
  private:
   void literal(std::uint8_t byte);
-  /// Copies of the byte before, or of the row above (length >= 3), as matches of at most 258.
-  void copies(std::uint64_t length, bool from_row_above);
+  /// Copies of the bytes `distance` back (length >= 3), as matches of at most 258.
+  void copies(std::uint64_t length, DeflateCode distance);
   /// The run of the last byte that is not written yet.
   void flush_run();
   void add_to_checksum_run(std::uint8_t byte, std::uint64_t count);
@@ -61,14 +69,12 @@ class RowDeflater {
   BitWriter bits_;
   std::vector<std::uint8_t> previous_;
   bool has_previous_ = false;
-  bool has_last_ = false;   ///< a byte was written: a run may copy it
-  std::uint8_t last_ = 0;   ///< the last byte written
-  std::uint64_t run_ = 0;   ///< copies of last_ not written yet
+  bool has_last_ = false;  ///< a byte was written: a run may copy it
+  std::uint8_t last_ = 0;  ///< the last byte written
+  std::uint64_t run_ = 0;  ///< copies of last_ not written yet
   std::uint32_t adler_a_ = 1, adler_b_ = 0;
   std::uint32_t row_a_ = 0, row_b_ = 0;  ///< the checksum sums of the last row alone
-  /// The distances 1 and row_bytes_ as deflate codes with their extra bits.
-  std::uint32_t distance_one_ = 0, distance_row_ = 0;
-  int distance_one_bits_ = 0, distance_row_bits_ = 0;
+  DeflateCode row_distance_;             ///< the distance of the row above, row_bytes_
 };
 
 /// The bytes of an 8-bit grey PNG of `width` x `height` pixels (both at least 1), rows given top
@@ -77,15 +83,18 @@ class GreyPngEncoder {
  public:
   GreyPngEncoder(std::uint32_t width, std::uint32_t height, std::uint32_t pixels_per_metre_x,
                  std::uint32_t pixels_per_metre_y);
-  /// `width` grey levels.
-  void add_row(const std::uint8_t* grey);
+  /// Where the next row's `width` grey levels go; add_row() then takes them.
+  std::uint8_t* next_row() { return row_.data() + 1; }
+  void add_row();
   /// The whole file, once every row was added.
   std::string finish();
 
  private:
   std::uint32_t width_, height_;
   std::uint32_t ppm_x_, ppm_y_;
-  std::vector<std::uint8_t> row_;  ///< the filter byte (none) and a row
+  /// The filter byte, 0 (none: on three grey levels in long runs the others only add work), and
+  /// a row.
+  std::vector<std::uint8_t> row_;
   std::string idat_;
   RowDeflater deflater_;
 };

@@ -60,11 +60,10 @@ class PngStackWriter final : public detail::LayerFilesSink {
     const std::array<std::uint8_t, 4> grey = {options_.empty, options_.interior, options_.empty,
                                               options_.boundary};
     detail::GreyPngEncoder png(g.nx, g.ny, ppm_x, ppm_y);
-    std::vector<std::uint8_t> row(g.nx);
     for (std::uint32_t r = 0; r < g.ny; ++r) {
       // Row j = 0 at the bottom: the first image row is the last grid row.
-      grey_row(layer.cells.data() + std::size_t{g.ny - 1 - r} * g.nx, g.nx, grey, row.data());
-      png.add_row(row.data());
+      grey_row(layer.cells.data() + std::size_t{g.ny - 1 - r} * g.nx, g.nx, grey, png.next_row());
+      png.add_row();
     }
     out.write(png.finish());
     return {};
