@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "support/page_encodings.hpp"
 #include "view/encode_internal.hpp"
 
 namespace strata::view {
@@ -39,18 +40,6 @@ TEST(WriteBase64, WritesExactlyTheCharactersItsSizeCounts) {
   }
 }
 
-/// The bytes zlib inflates from `packed`, told their number.
-std::string inflated(const std::string& packed, std::size_t size) {
-  std::string back(size, '\1');
-  uLongf back_size = static_cast<uLongf>(back.size());
-  const int rc =
-      uncompress(reinterpret_cast<Bytef*>(back.data()), &back_size,
-                 reinterpret_cast<const Bytef*>(packed.data()), static_cast<uLong>(packed.size()));
-  EXPECT_EQ(rc, Z_OK);
-  EXPECT_EQ(back_size, size);
-  return back;
-}
-
 TEST(ZlibCompress, RoundTripsBytesWithoutRuns) {
   // The run-length strategy writes what it cannot match as literals.
   std::string noise(100'000, '\0');
@@ -59,8 +48,8 @@ TEST(ZlibCompress, RoundTripsBytesWithoutRuns) {
     x = x * 1664525u + 1013904223u;
     c = static_cast<char>(x >> 24);
   }
-  EXPECT_EQ(inflated(detail::zlib_compress(noise), noise.size()), noise);
-  EXPECT_EQ(inflated(detail::zlib_compress(""), 0), "");
+  EXPECT_EQ(test::inflate(detail::zlib_compress(noise), noise.size()), noise);
+  EXPECT_EQ(test::inflate(detail::zlib_compress(""), 0), "");
 }
 
 TEST(ZlibCompress, RoundTripsThroughZlib) {
