@@ -31,10 +31,7 @@ using Mesh = CGAL::Surface_mesh<Point3>;
 using Polygon = std::vector<std::size_t>;
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-
-bool same_edge(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b) {
-  return (p == a && q == b) || (p == b && q == a);
-}
+constexpr std::uint32_t kReversed = 0x80000000u;
 
 Vec3 to_vec3(const Point3& p) {
   // The soup's points were built from doubles and only copied since.
@@ -77,7 +74,10 @@ struct SoupMesh::Impl {
   bool usable = false;
   std::vector<Vec3> vertex_position;      ///< per mesh vertex
   std::vector<std::uint32_t> face_facet;  ///< per mesh face: its input facet, or kNone
-  std::vector<std::uint32_t> facet_face;  ///< per input facet: its mesh face, or kNone
+  /// Per input facet: its face's halfedge along the facet's edge from corner 0 to corner 1, with
+  /// kReversed set when the face runs the other way round; kNone when it has no face. A segment
+  /// then finds the halfedges of its two edges from their corner numbers alone.
+  std::vector<std::uint32_t> facet_edge0;
 
   explicit Impl(const IndexedMesh& m) : input(m) {}
 };
@@ -111,7 +111,7 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
 
     // Orientation reverses and splits, but neither drops nor reorders polygons: checked.
     const bool facet_order = clean && polygons.size() == input.triangles.size();
-    d.facet_face.assign(input.triangles.size(), kNone);
+    d.facet_edge0.assign(input.triangles.size(), kNone);
     // CGAL's own check (PMP::is_polygon_soup_a_polygon_mesh) gives the same answer with a tree
     // node per halfedge: the largest allocation of the exact path.
     if (polygons.empty() || !(already_mesh || soup::is_polygon_mesh(polygons, points.size()))) {
@@ -151,6 +151,25 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
       }
       return found;
     };
+    // The face's halfedge on the facet's edge 0, found by positions (the repair may have merged
+    // the facet's vertices into other indices); kNone unless the face's corners are the facet's.
+    const auto edge0_of = [&](std::uint32_t facet, Mesh::Face_index face) {
+      const auto& t = input.triangles[facet];
+      const Vec3* corner[3] = {&input.vertices[t[0]], &input.vertices[t[1]], &input.vertices[t[2]]};
+      const Mesh::Halfedge_index h0 = d.mesh.halfedge(face);
+      const Mesh::Halfedge_index h[3] = {h0, d.mesh.next(h0), d.mesh.next(d.mesh.next(h0))};
+      for (int k = 0; k < 3; ++k) {
+        const Vec3& source = d.vertex_position[d.mesh.source(h[k])];
+        const Vec3& s1 = d.vertex_position[d.mesh.source(h[(k + 1) % 3])];
+        const Vec3& s2 = d.vertex_position[d.mesh.source(h[(k + 2) % 3])];
+        if (source != *corner[0]) continue;
+        if (s1 == *corner[1] && s2 == *corner[2]) return static_cast<std::uint32_t>(h[k]);
+        // Reversed, the face runs corner 0, 2, 1: its edge 0 is the halfedge from corner 1.
+        if (s1 == *corner[2] && s2 == *corner[1])
+          return static_cast<std::uint32_t>(h[(k + 2) % 3]) | kReversed;
+      }
+      return kNone;
+    };
     d.face_facet.assign(polygons.size(), kNone);
     for (std::size_t i = 0; i < polygons.size(); ++i) {
       const auto& p = polygons[i];
@@ -169,7 +188,7 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
                     {d.vertex_position[p[0]], d.vertex_position[p[1]], d.vertex_position[p[2]]}));
       if (facet == kNone) continue;
       d.face_facet[i] = facet;
-      d.facet_face[facet] = static_cast<std::uint32_t>(i);
+      d.facet_edge0[facet] = edge0_of(facet, face);
     }
     d.usable = true;
     d.report.polygon_mesh = true;
@@ -216,34 +235,36 @@ std::optional<std::vector<ExactLoop>> SoupMesh::chain_layer(ExactLayer& layer) c
   std::vector<Mesh::Halfedge_index> end_h(n);
   std::vector<bool> active(n, false);
 
+  // The halfedge of edge k (from corner k to corner k + 1) of a facet whose edge 0 is h0: k steps
+  // along the face, or 3 - k when the face runs against the facet.
+  const auto edge_halfedge = [&](std::uint32_t edge0, int k) {
+    Mesh::Halfedge_index h(edge0 & ~kReversed);
+    const int steps = (edge0 & kReversed) != 0 ? (3 - k) % 3 : k;
+    for (int i = 0; i < steps; ++i) h = d.mesh.next(h);
+    return h;
+  };
   for (std::size_t s = 0; s < n; ++s) {
     const ExactSegment& seg = segments[s];
-    const std::uint32_t face = d.facet_face[seg.facet];
-    if (face == kNone) {
+    const std::uint32_t edge0 = d.facet_edge0[seg.facet];
+    if (edge0 == kNone) {
       // Facets the repair dropped with a repeated corner meet the plane in one point and bound
       // nothing; any other missing facet leaves a gap the mesh cannot walk.
       if (seg.zero_length) continue;
       return std::nullopt;
     }
-    const Vec3& sb = d.input.vertices[seg.start_edge.below];
-    const Vec3& sa = d.input.vertices[seg.start_edge.above];
-    const Vec3& eb = d.input.vertices[seg.end_edge.below];
-    const Vec3& ea = d.input.vertices[seg.end_edge.above];
-    bool found_start = false;
-    bool found_end = false;
-    const Mesh::Face_index f(static_cast<Mesh::size_type>(face));
-    for (const Mesh::Halfedge_index h : d.mesh.halfedges_around_face(d.mesh.halfedge(f))) {
-      const Vec3& p = d.vertex_position[d.mesh.source(h)];
-      const Vec3& q = d.vertex_position[d.mesh.target(h)];
-      if (same_edge(p, q, sb, sa)) {
-        start_h[s] = h;
-        found_start = true;
-      } else if (same_edge(p, q, eb, ea)) {
-        end_h[s] = h;
-        found_end = true;
-      }
+    // The segment starts on the edge k going down (corner k above, k + 1 below) and ends on the
+    // edge going up (corner k below): facet_crossing's edges, named by the facet's own corners.
+    const auto& t = d.input.triangles[seg.facet];
+    int start_k = -1;
+    int end_k = -1;
+    for (int k = 0; k < 3; ++k) {
+      const int next = (k + 1) % 3;
+      if (t[k] == seg.start_edge.above && t[next] == seg.start_edge.below) start_k = k;
+      if (t[k] == seg.end_edge.below && t[next] == seg.end_edge.above) end_k = k;
     }
-    if (!found_start || !found_end) return std::nullopt;
+    if (start_k < 0 || end_k < 0) return std::nullopt;
+    start_h[s] = edge_halfedge(edge0, start_k);
+    end_h[s] = edge_halfedge(edge0, end_k);
     active[s] = true;
   }
 
