@@ -1,16 +1,15 @@
-#include <mpfr.h>
-
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 #include "exact/exact_numbers_internal.hpp"
 
 namespace strata::exact::detail {
 namespace {
 
-/// Correct rounding for results below the normal range, where MPFR's 53-bit result would be
-/// rounded a second time: mpq_get_d truncates towards zero, so the nearest double is d or its
+/// Correct rounding for results below the normal range, where a 53-bit result would be rounded
+/// a second time: mpq_get_d truncates towards zero, so the nearest double is d or its
 /// neighbour away from zero, told apart by the exact midpoint. @pre q is not zero.
 double round_small(mpq_srcptr q) {
   const mpq_class exact(q);
@@ -27,17 +26,59 @@ double round_small(mpq_srcptr q) {
   return (bits & 1) == 0 ? d : away;
 }
 
-/// A 53-bit MPFR value kept per thread, so rounding allocates nothing.
+/// Integers kept per thread, so that rounding allocates nothing once they have grown.
 class Scratch {
  public:
-  Scratch() { mpfr_init2(value_, 53); }
-  ~Scratch() { mpfr_clear(value_); }
+  Scratch() {
+    mpz_init(shifted_);
+    mpz_init(quotient_);
+    mpz_init(remainder_);
+  }
+  ~Scratch() {
+    mpz_clear(shifted_);
+    mpz_clear(quotient_);
+    mpz_clear(remainder_);
+  }
   Scratch(const Scratch&) = delete;
   Scratch& operator=(const Scratch&) = delete;
-  mpfr_ptr get() { return value_; }
+
+  /// The nearest double to num / den (ties to even) when it is a normal double or infinite;
+  /// NaN below the normal range. @pre num is not zero, den > 0.
+  double round_quotient(mpz_srcptr num, mpz_srcptr den) {
+    // With s chosen so that |num| 2^s / den lies in (2^54, 2^56), its integer part has 55 or 56
+    // bits: the 53 of the result, a rounding bit and at least one more; the remainder tells
+    // whether anything lies below them.
+    const long num_bits = static_cast<long>(mpz_sizeinbase(num, 2));
+    const long den_bits = static_cast<long>(mpz_sizeinbase(den, 2));
+    const long s = 55 - (num_bits - den_bits);
+    if (s >= 0) {
+      mpz_mul_2exp(shifted_, num, static_cast<mp_bitcnt_t>(s));
+      mpz_tdiv_qr(quotient_, remainder_, shifted_, den);
+    } else {
+      mpz_mul_2exp(shifted_, den, static_cast<mp_bitcnt_t>(-s));
+      mpz_tdiv_qr(quotient_, remainder_, num, shifted_);
+    }
+    const bool below = mpz_sgn(remainder_) != 0;
+    const bool negative = mpz_sgn(quotient_) < 0;
+    const auto quotient_bits = static_cast<int>(mpz_sizeinbase(quotient_, 2));  // 55 or 56
+    const int dropped = quotient_bits - 53;
+    const std::uint64_t q = mpz_getlimbn(quotient_, 0);  // |quotient|: its 56 bits fit one limb
+    std::uint64_t mantissa = q >> dropped;
+    const std::uint64_t rest = q & ((std::uint64_t{1} << dropped) - 1);
+    const std::uint64_t half = std::uint64_t{1} << (dropped - 1);
+    if (rest > half || (rest == half && (below || (mantissa & 1) != 0))) ++mantissa;
+    // The result is mantissa 2^(dropped - s): its leading bit at 2^(52 + dropped - s), or one
+    // higher when rounding carried into 2^53.
+    const long exponent = static_cast<long>(dropped) - s;
+    const long leading = exponent + (mantissa == (std::uint64_t{1} << 53) ? 53 : 52);
+    if (leading < -1022) return std::numeric_limits<double>::quiet_NaN();
+    if (leading > 1023) return negative ? -HUGE_VAL : HUGE_VAL;
+    const double magnitude = std::ldexp(static_cast<double>(mantissa), static_cast<int>(exponent));
+    return negative ? -magnitude : magnitude;
+  }
 
  private:
-  mpfr_t value_;
+  mpz_t shifted_, quotient_, remainder_;
 };
 
 mpq_srcptr raw_of(const mpq_class& q) { return q.get_mpq_t(); }
@@ -52,12 +93,9 @@ mpq_srcptr raw_mpq(const Rational& q) { return raw_of(q); }
 double round_to_double(mpq_srcptr q) {
   if (mpq_sgn(q) == 0) return 0.0;
   thread_local Scratch scratch;
-  mpfr_ptr r = scratch.get();
-  // Correctly rounded to 53 bits with MPFR's unbounded exponent: exact as a double whenever the
-  // result is a normal double (x = m 2^e with 1/2 <= |m| < 1: normal for e >= -1021).
-  mpfr_set_q(r, q, MPFR_RNDN);
-  if (mpfr_get_exp(r) < -1021) return round_small(q);
-  return mpfr_get_d(r, MPFR_RNDN);
+  const double d = scratch.round_quotient(mpq_numref(q), mpq_denref(q));
+  // Below the normal range a 53-bit rounding would be rounded a second time.
+  return std::isnan(d) ? round_small(q) : d;
 }
 
 void set_scaled(mpz_class& out, double v, int e) {

@@ -15,7 +15,7 @@ static_assert(std::is_same_v<Kernel::FT::ET, Rational>, "Epeck's exact number ty
 mpq_srcptr raw_mpq(const Rational& q);
 
 /// The double nearest to the GMP rational q (ties to even): the one rounding of a constructed
-/// value. Uses a per-thread MPFR scratch value, no global state.
+/// value. One integer division on per-thread scratch integers, no global state.
 double round_to_double(mpq_srcptr q);
 inline double round_to_double(const Rational& q) { return round_to_double(raw_mpq(q)); }
 

@@ -9,9 +9,11 @@
 #endif
 
 #include <gtest/gtest.h>
+#include <mpfr.h>
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <type_traits>
 
 #include "exact/exact_numbers_internal.hpp"
@@ -67,6 +69,58 @@ TEST(RoundToDouble, RoundsJustAboveTheNormalRangesLowerEndOnce) {
   // 2^-1022 (1 + 2^-53): a tie between 2^-1022 (even) and its successor.
   mpq_class tie = scaled(1, 1022) + scaled(1, 1075);
   EXPECT_EQ(rounded(tie), smallest_normal);
+}
+
+/// MPFR's correctly rounded division at 53 bits, for values in the normal range.
+double mpfr_rounded(const mpq_class& q) {
+  mpfr_t r;
+  mpfr_init2(r, 53);
+  mpfr_set_q(r, q.get_mpq_t(), MPFR_RNDN);
+  const double d = mpfr_get_d(r, MPFR_RNDN);
+  mpfr_clear(r);
+  return d;
+}
+
+/// A random integer of 1 to `max_bits` bits, of either sign.
+mpz_class random_integer(std::mt19937_64& random, int max_bits) {
+  const int bits = std::uniform_int_distribution<int>(1, max_bits)(random);
+  mpz_class n = 1;
+  for (int b = 1; b < bits; ++b) n = 2 * n + static_cast<int>(random() & 1);
+  return (random() & 1) != 0 ? mpz_class(-n) : n;
+}
+
+TEST(RoundToDouble, AgreesWithMpfrOnRandomQuotients) {
+  std::mt19937_64 random(20261127);
+  for (int i = 0; i < 20000; ++i) {
+    const mpz_class num = random_integer(random, 1 + i % 200);
+    mpz_class den = abs(random_integer(random, 1 + (i / 7) % 150));
+    mpq_class q(num, den);
+    q.canonicalize();
+    ASSERT_EQ(rounded(q), mpfr_rounded(q)) << q.get_str();
+  }
+}
+
+TEST(RoundToDouble, BreaksExactTiesToEvenAndRoundsNearTiesAway) {
+  std::mt19937_64 random(7);
+  for (int i = 0; i < 5000; ++i) {
+    // A 53-bit mantissa m and the midpoint (m + 1/2) 2^k between it and its successor.
+    const std::uint64_t m = (std::uint64_t{1} << 52) | (random() >> 12);
+    const int k = static_cast<int>(random() % 200) - 100;
+    mpq_class tie = mpq_class(mpz_class(std::to_string(2 * m + 1)), 2);
+    if (k >= 0) mpq_mul_2exp(tie.get_mpq_t(), tie.get_mpq_t(), static_cast<mp_bitcnt_t>(k));
+    if (k < 0) mpq_div_2exp(tie.get_mpq_t(), tie.get_mpq_t(), static_cast<mp_bitcnt_t>(-k));
+    const double down = std::ldexp(static_cast<double>(m), k);
+    const double up = std::ldexp(static_cast<double>(m + 1), k);
+    ASSERT_EQ(rounded(tie), (m & 1) == 0 ? down : up);
+    ASSERT_EQ(rounded(-tie), (m & 1) == 0 ? -down : -up);
+    // A hair either side of the tie: one part in 2^300 of it.
+    mpq_class hair = tie;
+    mpq_div_2exp(hair.get_mpq_t(), hair.get_mpq_t(), 300);
+    ASSERT_EQ(rounded(tie + hair), up);
+    ASSERT_EQ(rounded(tie - hair), down);
+    ASSERT_EQ(rounded(tie + hair / 3), up);
+    ASSERT_EQ(rounded(tie - hair / 3), down);
+  }
 }
 
 TEST(CompareWithDouble, DecidesByTheExactValueWhenTheRoundedOneTies) {
