@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/huge_pages.hpp"
 #include "diagnose/exact_geometry.hpp"
 #include "diagnose/find_self_intersections_internal.hpp"
 #include "strata/core/error.hpp"
@@ -205,6 +206,7 @@ ByVertex<Item> sort_by_vertex(std::size_t num_vertices, std::size_t num_facets, 
     for (std::vector<std::size_t>& at : next) placed += std::exchange(at[v], placed);
   }
   out.start[num_vertices] = placed;
+  reserve_huge_pages(out.items, placed);
   out.items.resize(placed);
   tbb::parallel_for(std::size_t{0}, ranges, [&](std::size_t range) {
     std::vector<std::size_t>& at = next[range];

@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "core/huge_pages.hpp"
 #include "diagnose/fixed_width_integer.hpp"
 #include "strata/core/error.hpp"
 
@@ -101,7 +102,9 @@ std::vector<mpz_class> sum_determinants(const IndexedMesh& mesh, int min_exponen
                                         const std::vector<std::uint32_t>& group_of_facet,
                                         std::size_t num_groups, std::size_t parts) {
   const std::size_t nv = mesh.vertices.size();
-  std::vector<ScaledCoordinate> coord(3 * nv);
+  std::vector<ScaledCoordinate> coord;
+  reserve_huge_pages(coord, 3 * nv);
+  coord.resize(3 * nv);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 4096), [&](const auto& range) {
     for (std::size_t v = range.begin(); v < range.end(); ++v) {
       const std::array<Dyadic, 3> p = to_dyadic(mesh.vertices[v]);

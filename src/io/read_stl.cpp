@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/huge_pages.hpp"
 #include "io/little_endian.hpp"
 #include "io/read_mesh_internal.hpp"
 #include "io/stl_format_internal.hpp"
@@ -84,6 +85,8 @@ Result<TriangleSoup> read_stl_binary(std::string_view bytes, std::string_view na
 
   // The records are independent: they are converted in parallel, and what is wrong with them is
   // reported afterwards in facet order, as a reading from the first record on would.
+  reserve_huge_pages(soup.triangles, count);
+  reserve_huge_pages(soup.stored_normals, count);
   soup.triangles.resize(count);
   soup.stored_normals.resize(count);
   std::atomic<std::uint32_t> first_bad_corner{count};

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/huge_pages.hpp"
 #include "strata/core/error.hpp"
 
 namespace strata {
@@ -48,6 +49,7 @@ class VertexTable {
   explicit VertexTable(std::size_t expected) {
     std::size_t capacity = 16;
     while (capacity < 2 * expected) capacity *= 2;
+    reserve_huge_pages(slots_, capacity);
     slots_.assign(capacity, Slot{});
   }
 
@@ -98,9 +100,9 @@ class VertexTable {
 
 IndexedMesh weld_vertices(const TriangleSoup& soup) {
   IndexedMesh mesh;
-  mesh.triangles.reserve(soup.triangles.size());
+  reserve_huge_pages(mesh.triangles, soup.triangles.size());
   // A closed triangle mesh has about half as many vertices as triangles.
-  mesh.vertices.reserve(soup.triangles.size() / 2 + 3);
+  reserve_huge_pages(mesh.vertices, soup.triangles.size() / 2 + 3);
   VertexTable index_of(soup.triangles.size() / 2 + 3);
 
   // The table is larger than the caches: each corner's slot is fetched a few corners ahead.
