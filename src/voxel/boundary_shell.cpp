@@ -4,6 +4,7 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <deque>
@@ -15,6 +16,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "core/huge_pages.hpp"
 #include "voxel/triangle_distance_filter_internal.hpp"
 
 namespace strata {
@@ -232,11 +234,19 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
   }
   if (!(thickness_mm_ > 0.0)) return;
   const std::size_t nf = mesh_.triangles.size();
-  std::vector<double> zmin(nf);
-  std::vector<double> zmax(nf);
-  std::vector<std::uint64_t> patch_key(nf);
+  // These arrays and the copies below are filled once: huge pages spare a fault per 4 KiB.
+  std::vector<double> zmin;
+  std::vector<double> zmax;
+  reserve_huge_pages(zmin, nf);
+  reserve_huge_pages(zmax, nf);
+  zmin.resize(nf);
+  zmax.resize(nf);
   // Patches: the facets whose centroids share a box of kPatchCells cells by kPatchLayers layers,
-  // counted from the mesh's lowest corner.
+  // counted from the mesh's lowest corner. A facet's box is the key it is sorted by, beside its
+  // index, so the sort reads no other array.
+  std::vector<std::pair<std::uint64_t, FacetIndex>> by_patch;
+  reserve_huge_pages(by_patch, nf);
+  by_patch.resize(nf);
   const Vec3 low = mesh_.bounds().min;
   const auto box_index = [](double offset, double size) {
     const double q = std::floor(offset / size);
@@ -255,58 +265,84 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
     const double cx = (a.x + b.x + c.x) / 3.0;
     const double cy = (a.y + b.y + c.y) / 3.0;
     const double cz = (a.z + b.z + c.z) / 3.0;
-    patch_key[f] = box_index(cz - low.z, patch_z) << 42 | box_index(cy - low.y, patch_y) << 21 |
-                   box_index(cx - low.x, patch_x);
+    by_patch[f] = {box_index(cz - low.z, patch_z) << 42 | box_index(cy - low.y, patch_y) << 21 |
+                       box_index(cx - low.x, patch_x),
+                   static_cast<FacetIndex>(f)};
   });
-  std::vector<FacetIndex> facets_by_patch(nf);
-  std::iota(facets_by_patch.begin(), facets_by_patch.end(), FacetIndex{0});
   // Ties by index, so that the parallel sort gives one order.
-  tbb::parallel_sort(facets_by_patch.begin(), facets_by_patch.end(),
-                     [&](FacetIndex a, FacetIndex b) {
-                       return patch_key[a] != patch_key[b] ? patch_key[a] < patch_key[b] : a < b;
-                     });
+  tbb::parallel_sort(by_patch.begin(), by_patch.end());
   std::vector<Patch> patches;
   for (std::size_t r = 0; r < nf;) {
     Patch patch;
     patch.begin = static_cast<std::uint32_t>(r);
-    patch.zmin = zmin[facets_by_patch[r]];
-    patch.zmax = zmax[facets_by_patch[r]];
-    const std::uint64_t key = patch_key[facets_by_patch[r]];
-    for (; r < nf && patch_key[facets_by_patch[r]] == key; ++r) {
-      patch.zmin = std::min(patch.zmin, zmin[facets_by_patch[r]]);
-      patch.zmax = std::max(patch.zmax, zmax[facets_by_patch[r]]);
-    }
+    const std::uint64_t key = by_patch[r].first;
+    while (r < nf && by_patch[r].first == key) ++r;
     patch.end = static_cast<std::uint32_t>(r);
     patches.push_back(patch);
   }
   // The facets in patch order, and their vertices copied in the order these facets first use
   // them: the layers read both in sequence rather than gathering corners from across the mesh
-  // (a vertex load missed the cache in most facets of a large mesh).
-  constexpr VertexIndex kUnnumbered = std::numeric_limits<VertexIndex>::max();
-  std::vector<VertexIndex> renumbered(mesh_.vertices.size(), kUnnumbered);
+  // (a vertex load missed the cache in most facets of a large mesh). A vertex's first use is the
+  // least of its corner positions 3 r + corner, found in parallel; the numbering then takes one
+  // pass over the positions that are first uses.
+  reserve_huge_pages(triangles_by_patch_, nf);
   triangles_by_patch_.resize(nf);
-  vertices_by_patch_.clear();
-  vertices_by_patch_.reserve(mesh_.vertices.size());
-  for (Patch& patch : patches) {
-    patch.vertex_begin = static_cast<std::uint32_t>(vertices_by_patch_.size());
+  constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::atomic<std::uint32_t>> first_use(mesh_.vertices.size());
+  tbb::parallel_for(std::size_t{0}, first_use.size(),
+                    [&](std::size_t v) { first_use[v].store(kUnused, std::memory_order_relaxed); });
+  tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t q) {
+    Patch& patch = patches[q];
+    patch.zmin = std::numeric_limits<double>::infinity();
+    patch.zmax = -std::numeric_limits<double>::infinity();
     for (std::uint32_t r = patch.begin; r < patch.end; ++r) {
-      const auto& tri = mesh_.triangles[facets_by_patch[r]];
+      const FacetIndex f = by_patch[r].second;
+      patch.zmin = std::min(patch.zmin, zmin[f]);
+      patch.zmax = std::max(patch.zmax, zmax[f]);
+      const auto& tri = mesh_.triangles[f];
+      triangles_by_patch_[r] = tri;
       for (int corner = 0; corner < 3; ++corner) {
-        VertexIndex& to = renumbered[tri[corner]];
-        if (to == kUnnumbered) {
-          to = static_cast<VertexIndex>(vertices_by_patch_.size());
-          vertices_by_patch_.push_back(mesh_.vertices[tri[corner]]);
+        const auto position = static_cast<std::uint32_t>(3 * r + static_cast<std::size_t>(corner));
+        std::atomic<std::uint32_t>& first = first_use[tri[corner]];
+        std::uint32_t seen = first.load(std::memory_order_relaxed);
+        while (position < seen &&
+               !first.compare_exchange_weak(seen, position, std::memory_order_relaxed)) {
         }
-        triangles_by_patch_[r][corner] = to;
       }
     }
-    patch.vertex_end = static_cast<std::uint32_t>(vertices_by_patch_.size());
+  });
+  std::vector<std::uint8_t> starts_vertex(3 * nf, 0);
+  tbb::parallel_for(std::size_t{0}, first_use.size(), [&](std::size_t v) {
+    const std::uint32_t first = first_use[v].load(std::memory_order_relaxed);
+    if (first != kUnused) starts_vertex[first] = 1;
+  });
+  std::vector<VertexIndex> renumbered(mesh_.vertices.size(), kUnused);
+  VertexIndex next = 0;
+  for (Patch& patch : patches) {
+    patch.vertex_begin = next;
+    for (std::size_t position = 3 * std::size_t{patch.begin}; position < 3 * std::size_t{patch.end};
+         ++position) {
+      if (starts_vertex[position] != 0)
+        renumbered[triangles_by_patch_[position / 3][position % 3]] = next++;
+    }
+    patch.vertex_end = next;
+  }
+  reserve_huge_pages(vertices_by_patch_, next);
+  vertices_by_patch_.resize(next);
+  tbb::parallel_for(std::size_t{0}, renumbered.size(), [&](std::size_t v) {
+    if (renumbered[v] != kUnused) vertices_by_patch_[renumbered[v]] = mesh_.vertices[v];
+  });
+  tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t q) {
+    Patch& patch = patches[q];
+    for (std::uint32_t r = patch.begin; r < patch.end; ++r) {
+      for (VertexIndex& v : triangles_by_patch_[r]) v = renumbered[v];
+    }
     for (std::uint32_t v = patch.vertex_begin; v < patch.vertex_end; ++v) {
       const Vec3& p = vertices_by_patch_[v];
       patch.vertex_lo = {std::min(patch.vertex_lo.x, p.x), std::min(patch.vertex_lo.y, p.y), 0.0};
       patch.vertex_hi = {std::max(patch.vertex_hi.x, p.x), std::max(patch.vertex_hi.y, p.y), 0.0};
     }
-  }
+  });
   // A patch's slab serves every layer: the facets a layer tests are some of the patch's.
   tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t q) {
     Patch& patch = patches[q];
