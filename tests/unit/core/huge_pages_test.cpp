@@ -1,0 +1,100 @@
+// The huge-page advice: which part of a buffer the kernel is asked to back with huge pages, seen
+// in the kernel's own account of the mapping (/proc/self/smaps, flag "hg").
+
+#include "core/huge_pages.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/mman.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace strata {
+namespace {
+
+constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
+
+/// Whether the mapping that holds `address` carries the huge-page advice.
+bool advised(std::uintptr_t address) {
+  std::ifstream smaps("/proc/self/smaps");
+  std::string line;
+  bool inside = false;
+  while (std::getline(smaps, line)) {
+    std::uintptr_t begin = 0;
+    std::uintptr_t end = 0;
+    char dash = 0;
+    std::istringstream range(line);
+    if (range >> std::hex >> begin >> dash >> end && dash == '-' &&
+        line.find(' ') != std::string::npos && line.find(':') > line.find(' ')) {
+      inside = begin <= address && address < end;
+      continue;
+    }
+    if (inside && line.rfind("VmFlags:", 0) == 0) return line.find(" hg") != std::string::npos;
+  }
+  return false;
+}
+
+/// An anonymous mapping of its own, so that the advice cannot reach anything else.
+class Mapping {
+ public:
+  explicit Mapping(std::size_t bytes) : bytes_(bytes) {
+    data_ = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  }
+  ~Mapping() {
+    if (data_ != MAP_FAILED) munmap(data_, bytes_);
+  }
+  Mapping(const Mapping&) = delete;
+  Mapping& operator=(const Mapping&) = delete;
+  std::uintptr_t address() const { return reinterpret_cast<std::uintptr_t>(data_); }
+  bool ok() const { return data_ != MAP_FAILED; }
+
+ private:
+  void* data_ = MAP_FAILED;
+  std::size_t bytes_ = 0;
+};
+
+bool kernel_offers_huge_pages() {
+  return std::filesystem::exists("/sys/kernel/mm/transparent_hugepage/enabled");
+}
+
+TEST(AdviseHugePages, AdvisesTheWholeHugePagesInsideABufferAndNothingAround) {
+  if (!kernel_offers_huge_pages()) GTEST_SKIP() << "this kernel has no transparent huge pages";
+  Mapping mapping(5 * kHugePage);
+  ASSERT_TRUE(mapping.ok());
+  // A buffer starting just past a huge-page boundary: the advice starts at the next boundary.
+  const std::uintptr_t first = (mapping.address() + kHugePage) & ~(kHugePage - 1);
+  const std::uintptr_t buffer = first - 4096;
+  advise_huge_pages(reinterpret_cast<void*>(buffer), 2 * kHugePage + 8192);
+  EXPECT_TRUE(advised(first));
+  EXPECT_TRUE(advised(first + 2 * kHugePage - 1));
+  EXPECT_FALSE(advised(buffer));                 // the partial page before
+  EXPECT_FALSE(advised(first + 2 * kHugePage));  // the partial page after
+}
+
+TEST(AdviseHugePages, LeavesBuffersWithoutAWholeHugePageAlone) {
+  if (!kernel_offers_huge_pages()) GTEST_SKIP() << "this kernel has no transparent huge pages";
+  Mapping mapping(4 * kHugePage);
+  ASSERT_TRUE(mapping.ok());
+  const std::uintptr_t first = (mapping.address() + kHugePage) & ~(kHugePage - 1);
+  // Smaller than a huge page; and as large as one but straddling a boundary.
+  advise_huge_pages(reinterpret_cast<void*>(first), kHugePage - 1);
+  advise_huge_pages(reinterpret_cast<void*>(first + kHugePage + 4096), kHugePage);
+  EXPECT_FALSE(advised(first));
+  EXPECT_FALSE(advised(first + kHugePage + 4096));
+  advise_huge_pages(nullptr, 8 * kHugePage);  // nothing to advise
+}
+
+TEST(ReserveHugePages, ReservesWithoutChangingTheVector) {
+  std::vector<double> values;
+  reserve_huge_pages(values, 1 << 20);
+  EXPECT_TRUE(values.empty());
+  EXPECT_GE(values.capacity(), std::size_t{1} << 20);
+  values.resize(1 << 20, 2.5);
+  EXPECT_EQ(values.back(), 2.5);
+}
+
+}  // namespace
+}  // namespace strata
