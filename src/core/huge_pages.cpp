@@ -8,14 +8,17 @@ namespace strata {
 
 void advise_huge_pages(void* data, std::size_t bytes) {
 #ifdef MADV_HUGEPAGE
-  // Smaller buffers hold no whole huge page; the advice is for the aligned whole pages inside.
+  // Only a buffer this large is sure to be a mapping of its own (glibc's malloc maps every
+  // request above 32 MiB separately, whatever its adaptive threshold): the advice then ends
+  // with the buffer. On a smaller one it could mark part of the heap, whose later tenants, a
+  // layer's cells freed and allocated again, would each fault in and zero a whole 2 MiB page.
+  constexpr std::size_t kOwnMapping = std::size_t{32} << 20;
+  if (data == nullptr || bytes <= kOwnMapping) return;
   constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
-  if (data == nullptr || bytes < kHugePage) return;
   const auto begin = reinterpret_cast<std::uintptr_t>(data);
   const std::uintptr_t first = (begin + kHugePage - 1) & ~(kHugePage - 1);
   const std::uintptr_t last = (begin + bytes) & ~(kHugePage - 1);
-  if (first >= last) return;
-  // A refusal (no THP in this kernel, or an unsupported range) leaves ordinary pages: ignored.
+  // A refusal (no THP in this kernel) leaves ordinary pages: ignored.
   (void)madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
 #else
   (void)data;

@@ -60,40 +60,44 @@ bool kernel_offers_huge_pages() {
   return std::filesystem::exists("/sys/kernel/mm/transparent_hugepage/enabled");
 }
 
-TEST(AdviseHugePages, AdvisesTheWholeHugePagesInsideABufferAndNothingAround) {
+constexpr std::uintptr_t kOwnMapping = std::uintptr_t{32} << 20;
+
+TEST(AdviseHugePages, AdvisesTheWholeHugePagesInsideALargeBufferAndNothingAround) {
   if (!kernel_offers_huge_pages()) GTEST_SKIP() << "this kernel has no transparent huge pages";
-  Mapping mapping(5 * kHugePage);
+  Mapping mapping(kOwnMapping + 4 * kHugePage);
   ASSERT_TRUE(mapping.ok());
   // A buffer starting just past a huge-page boundary: the advice starts at the next boundary.
   const std::uintptr_t first = (mapping.address() + kHugePage) & ~(kHugePage - 1);
   const std::uintptr_t buffer = first - 4096;
-  advise_huge_pages(reinterpret_cast<void*>(buffer), 2 * kHugePage + 8192);
+  const std::uintptr_t whole = kOwnMapping + kHugePage;  // the whole huge pages inside
+  advise_huge_pages(reinterpret_cast<void*>(buffer), whole + 8192);
   EXPECT_TRUE(advised(first));
-  EXPECT_TRUE(advised(first + 2 * kHugePage - 1));
-  EXPECT_FALSE(advised(buffer));                 // the partial page before
-  EXPECT_FALSE(advised(first + 2 * kHugePage));  // the partial page after
+  EXPECT_TRUE(advised(first + whole - 1));
+  EXPECT_FALSE(advised(buffer));         // the partial page before
+  EXPECT_FALSE(advised(first + whole));  // the partial page after
 }
 
-TEST(AdviseHugePages, LeavesBuffersWithoutAWholeHugePageAlone) {
+TEST(AdviseHugePages, LeavesBuffersThatMayShareTheHeapAlone) {
   if (!kernel_offers_huge_pages()) GTEST_SKIP() << "this kernel has no transparent huge pages";
-  Mapping mapping(4 * kHugePage);
+  Mapping mapping(kOwnMapping + 2 * kHugePage);
   ASSERT_TRUE(mapping.ok());
   const std::uintptr_t first = (mapping.address() + kHugePage) & ~(kHugePage - 1);
-  // Smaller than a huge page; and as large as one but straddling a boundary.
-  advise_huge_pages(reinterpret_cast<void*>(first), kHugePage - 1);
-  advise_huge_pages(reinterpret_cast<void*>(first + kHugePage + 4096), kHugePage);
+  // 32 MiB exactly, from a huge-page boundary: sixteen whole huge pages, but not surely a
+  // mapping of its own.
+  advise_huge_pages(reinterpret_cast<void*>(first), kOwnMapping);
   EXPECT_FALSE(advised(first));
-  EXPECT_FALSE(advised(first + kHugePage + 4096));
-  advise_huge_pages(nullptr, 8 * kHugePage);  // nothing to advise
+  EXPECT_FALSE(advised(first + kOwnMapping - 1));
+  advise_huge_pages(nullptr, 2 * kOwnMapping);  // nothing to advise
 }
 
-TEST(ReserveHugePages, ReservesWithoutChangingTheVector) {
+TEST(ReserveHugePages, ReservesAnEmptyVectorOnAdvisedPages) {
+  if (!kernel_offers_huge_pages()) GTEST_SKIP() << "this kernel has no transparent huge pages";
   std::vector<double> values;
-  reserve_huge_pages(values, 1 << 20);
+  reserve_huge_pages(values, 5 << 20);  // 40 MiB
   EXPECT_TRUE(values.empty());
-  EXPECT_GE(values.capacity(), std::size_t{1} << 20);
-  values.resize(1 << 20, 2.5);
-  EXPECT_EQ(values.back(), 2.5);
+  EXPECT_GE(values.capacity(), std::size_t{5} << 20);
+  const auto data = reinterpret_cast<std::uintptr_t>(values.data());
+  EXPECT_TRUE(advised((data + kHugePage) & ~(kHugePage - 1)));
 }
 
 }  // namespace
