@@ -123,6 +123,30 @@ TEST(RoundToDouble, BreaksExactTiesToEvenAndRoundsNearTiesAway) {
   }
 }
 
+TEST(SetScaled, GivesTheDoubleOverTheCommonPowerOfTwoExactly) {
+  const double values[] = {1.0,
+                           -1.0,
+                           0.1,
+                           -3.75e-9,
+                           123456.789,
+                           1e300,
+                           -0.0,
+                           0.0,
+                           kMinSubnormal,
+                           -7 * kMinSubnormal,
+                           std::numeric_limits<double>::min()};
+  int e = std::numeric_limits<int>::max();
+  for (const double v : values) lower_to_last_bit(e, v);
+  for (const double v : values) {
+    mpz_class scaled_value;
+    set_scaled(scaled_value, v, e);
+    // scaled_value 2^e == v, with 2^e below every value's last bit.
+    mpq_class back(scaled_value);
+    mpq_div_2exp(back.get_mpq_t(), back.get_mpq_t(), static_cast<mp_bitcnt_t>(-e));
+    EXPECT_EQ(back, mpq_class(v)) << v;
+  }
+}
+
 TEST(CompareWithDouble, DecidesByTheExactValueWhenTheRoundedOneTies) {
   const RoundedRational above(Rational(1) + Rational(scaled(1, 60)));
   const RoundedRational below(Rational(1) - Rational(scaled(1, 60)));
