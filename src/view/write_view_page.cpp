@@ -38,6 +38,50 @@ std::string b64(const std::vector<T>& values) {
 /// make it a string no name or note can be.
 constexpr const char* kLayersMarker = "\x01strata-layers\x01";
 
+/// Long base64 values kept out of the JSON document while it is written: each stands in it as a
+/// marker until its text replaces it. Base64 needs no escape, and the JSON library would look
+/// at each of its characters again (the display mesh of a large model is megabytes of it).
+class HeldTexts {
+ public:
+  /// The marker to put in the document for `text`.
+  std::string hold(std::string text) {
+    std::string marker = fmt::format("\x01strata-held-{}\x01", texts_.size());
+    // As a value it follows its key's colon: a name holding the marker's text has its quotes
+    // escaped, and never matches.
+    patterns_.push_back(":" + json(marker).dump());
+    texts_.push_back(std::move(text));
+    return marker;
+  }
+
+  /// `document` with every held text, in quotes, where its marker is.
+  std::string put_back(std::string document) const {
+    if (texts_.empty()) return document;
+    std::vector<std::pair<std::size_t, std::size_t>> found;  // (where, which)
+    std::size_t size = document.size();
+    for (std::size_t k = 0; k < texts_.size(); ++k) {
+      const std::size_t at = document.find(patterns_[k]);
+      STRATA_ASSERT(at != std::string::npos, "a held text's marker is in the page data");
+      found.emplace_back(at, k);
+      size += texts_[k].size() + 3 - patterns_[k].size();
+    }
+    std::sort(found.begin(), found.end());
+    std::string out;
+    out.reserve(size);
+    std::size_t from = 0;
+    for (const auto& [at, k] : found) {
+      out.append(document, from, at - from);
+      out.append(":\"").append(texts_[k]).push_back('"');
+      from = at + patterns_[k].size();
+    }
+    out.append(document, from);
+    return out;
+  }
+
+ private:
+  std::vector<std::string> patterns_;
+  std::vector<std::string> texts_;
+};
+
 /// The text of a base64 string of `bytes`, with its quotes, at `to`; returns the end.
 char* write_quoted_base64(std::string_view bytes, char* to) {
   *to++ = '"';
@@ -274,6 +318,7 @@ TemplateParts template_parts() {
 
 Result<std::string> view_page_data(const ViewPage& page) {
   json data;
+  HeldTexts held;
   data["format"] = "strata-view";
   data["version"] = 1;
   data["title"] = page.title;
@@ -302,8 +347,8 @@ Result<std::string> view_page_data(const ViewPage& page) {
     data["mesh"] = {{"facets_in_model", m.facets_in_model},
                     {"facets_shown", m.facets()},
                     {"simplified", m.simplified},
-                    {"positions", b64(m.positions)},
-                    {"indices", b64(m.indices)}};
+                    {"positions", held.hold(b64(m.positions))},
+                    {"indices", held.hold(b64(m.indices))}};
   }
   data["check"] = nullptr;
   if (page.check) data["check"] = check_json(*page.check, page.model_mesh);
@@ -323,7 +368,7 @@ Result<std::string> view_page_data(const ViewPage& page) {
                       {"bx", v.bx},
                       {"by", v.by},
                       {"bz", v.bz},
-                      {"data", detail::base64(detail::zlib_compress(volume_bytes))}};
+                      {"data", held.hold(detail::base64(detail::zlib_compress(volume_bytes)))}};
   }
 
   data["validation"] = nullptr;
@@ -336,7 +381,8 @@ Result<std::string> view_page_data(const ViewPage& page) {
   }
 
   // Invalid UTF-8 in a name (a path of the model) is replaced rather than refused.
-  std::string text = data.dump(-1, ' ', false, json::error_handler_t::replace);
+  const std::string text =
+      held.put_back(data.dump(-1, ' ', false, json::error_handler_t::replace));
   // With its key: a name holding the marker's text is written with its quotes escaped.
   const std::string key = R"("layers":)";
   const std::string marker = key + json(kLayersMarker).dump();
