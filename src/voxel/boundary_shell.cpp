@@ -9,7 +9,6 @@
 #include <cmath>
 #include <deque>
 #include <limits>
-#include <numeric>
 #include <optional>
 
 #if defined(__SSE2__)
@@ -17,6 +16,7 @@
 #endif
 
 #include "core/huge_pages.hpp"
+#include "strata/core/error.hpp"
 #include "voxel/triangle_distance_filter_internal.hpp"
 
 namespace strata {
@@ -288,6 +288,7 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
   reserve_huge_pages(triangles_by_patch_, nf);
   triangles_by_patch_.resize(nf);
   constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
+  STRATA_ASSERT(3 * nf < kUnused, "corner positions are numbered in 32 bits");
   std::vector<std::atomic<std::uint32_t>> first_use(mesh_.vertices.size());
   tbb::parallel_for(std::size_t{0}, first_use.size(),
                     [&](std::size_t v) { first_use[v].store(kUnused, std::memory_order_relaxed); });
