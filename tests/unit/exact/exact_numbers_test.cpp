@@ -89,6 +89,20 @@ mpz_class random_integer(std::mt19937_64& random, int max_bits) {
   return (random() & 1) != 0 ? mpz_class(-n) : n;
 }
 
+TEST(RoundToDouble, RoundsBeyondTheLargestDoubleToInfinity) {
+  const double largest = std::numeric_limits<double>::max();  // (2^53 - 1) 2^971
+  mpq_class two_to_1024(1);
+  mpq_mul_2exp(two_to_1024.get_mpq_t(), two_to_1024.get_mpq_t(), 1024);
+  EXPECT_EQ(rounded(two_to_1024), HUGE_VAL);
+  EXPECT_EQ(rounded(-two_to_1024), -HUGE_VAL);
+  // Halfway between the largest double and 2^1024 rounds to even, up; a hair less, down.
+  mpq_class half_ulp(1);
+  mpq_mul_2exp(half_ulp.get_mpq_t(), half_ulp.get_mpq_t(), 970);
+  EXPECT_EQ(rounded(mpq_class(largest) + half_ulp), HUGE_VAL);
+  EXPECT_EQ(rounded(mpq_class(largest) + half_ulp - 1), largest);
+  EXPECT_EQ(rounded(-(mpq_class(largest) + half_ulp - 1)), -largest);
+}
+
 TEST(RoundToDouble, AgreesWithMpfrOnRandomQuotients) {
   std::mt19937_64 random(20261127);
   for (int i = 0; i < 20000; ++i) {
