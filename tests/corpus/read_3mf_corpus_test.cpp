@@ -59,7 +59,9 @@ TEST_P(Read3mfCorpus, LoadsOrGivesAClearError) {
   }
   // Each mesh object is placed at least once: never fewer triangles than the manifest's count of
   // the objects' own triangles, more where components repeat an object.
-  if (e.facets) EXPECT_GE(soup.triangles.size(), *e.facets) << e.path;
+  if (e.facets) {
+    EXPECT_GE(soup.triangles.size(), *e.facets) << e.path;
+  }
   std::printf("%s: %zu triangles\n", e.path.generic_string().c_str(), soup.triangles.size());
 }
 
