@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "core/double_parts.hpp"
 #include "core/huge_pages.hpp"
 #include "diagnose/fixed_width_integer.hpp"
 #include "strata/core/error.hpp"
@@ -43,21 +44,11 @@ struct Dyadic {
 /// a million facets' vertices make a million and a half coordinates.
 Dyadic to_dyadic(double x) {
   if (x == 0.0) return {};
-  constexpr int kFractionBits = 52;
-  constexpr int kExponentBias = 1023 + kFractionBits;  // of the integer mantissa
-  const auto bits = std::bit_cast<std::uint64_t>(x);
-  const int biased = static_cast<int>((bits >> kFractionBits) & 0x7FF);
-  std::uint64_t magnitude = bits & ((std::uint64_t{1} << kFractionBits) - 1);
-  int exponent = 1 - kExponentBias;  // subnormal: no implicit leading bit
-  if (biased != 0) {
-    magnitude |= std::uint64_t{1} << kFractionBits;
-    exponent = biased - kExponentBias;
-  }
-  const int zeros = std::countr_zero(magnitude);
-  magnitude >>= zeros;  // exact: the low bits are zero
-  exponent += zeros;
-  const auto mantissa = static_cast<std::int64_t>(magnitude);
-  return {(bits >> 63) != 0 ? -mantissa : mantissa, exponent};
+  const DoubleParts parts = split_double(x);
+  const int zeros = std::countr_zero(parts.mantissa);
+  // Exact: the low bits are zero.
+  const auto mantissa = static_cast<std::int64_t>(parts.mantissa >> zeros);
+  return {parts.negative ? -mantissa : mantissa, parts.exponent + zeros};
 }
 
 std::array<Dyadic, 3> to_dyadic(const Vec3& p) {

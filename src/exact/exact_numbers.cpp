@@ -1,9 +1,9 @@
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 
+#include "core/double_parts.hpp"
 #include "exact/exact_numbers_internal.hpp"
 
 namespace strata::exact::detail {
@@ -104,20 +104,12 @@ void set_scaled(mpz_class& out, double v, int e) {
     out = 0;
     return;
   }
-  // v = mantissa 2^exponent, read from its bits: a 53-bit integer (52 below the normal range).
-  const auto bits = std::bit_cast<std::uint64_t>(v);
-  const auto biased = static_cast<int>((bits >> 52) & 0x7FF);
-  std::uint64_t mantissa = bits & ((std::uint64_t{1} << 52) - 1);
-  int exponent = -1074;
-  if (biased != 0) {
-    mantissa |= std::uint64_t{1} << 52;
-    exponent = biased - 1075;
-  }
+  const DoubleParts parts = split_double(v);
   static_assert(sizeof(unsigned long) == sizeof(std::uint64_t), "a mantissa fits one limb");
-  mpz_set_ui(out.get_mpz_t(), mantissa);
-  const int shift = exponent - e;  // >= 0 by the choice of e
+  mpz_set_ui(out.get_mpz_t(), parts.mantissa);
+  const int shift = parts.exponent - e;  // >= 0 by the choice of e
   if (shift > 0) mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
-  if ((bits >> 63) != 0) mpz_neg(out.get_mpz_t(), out.get_mpz_t());
+  if (parts.negative) mpz_neg(out.get_mpz_t(), out.get_mpz_t());
 }
 
 void set_scaled_quotient(mpq_class& out, const mpz_class& num, const mpz_class& den, int e) {
