@@ -2,7 +2,6 @@
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
-#include <mpfr.h>
 
 #include <cmath>
 #include <cstdint>
@@ -11,6 +10,7 @@
 #include <vector>
 
 #include "support/mesh_builders.hpp"
+#include "support/nearest_double.hpp"
 
 namespace strata::diagnose::detail {
 namespace {
@@ -100,16 +100,6 @@ TEST(ExactSignedVolumes, SumsManyFacetsInPartsAsExactlyAsInOne) {
   EXPECT_EQ(cubes.total_mm3, 3000.0);
 }
 
-/// The nearest double to q (ties to even), by MPFR: the definition of one rounding.
-double nearest_double(const mpq_class& q) {
-  mpfr_t r;
-  mpfr_init2(r, 53);
-  mpfr_set_q(r, q.get_mpq_t(), MPFR_RNDN);
-  const double d = mpfr_get_d(r, MPFR_RNDN);
-  mpfr_clear(r);
-  return d;
-}
-
 /// Random facets whose coordinates are m 2^e, |m| < 2^53, e in [-spread, spread]: the spread sets
 /// how wide the coordinates are on one common exponent, and so which arithmetic sums them (four
 /// limbs up to 73 bits, six up to 116, GMP's integers beyond).
@@ -154,11 +144,11 @@ TEST(ExactSignedVolumes, EveryArithmeticSumsAsRationalsDo) {
       const ExactVolumes v = exact_signed_volumes(mesh, group, 3);
       mpq_class total;
       for (std::size_t g = 0; g < 3; ++g) {
-        EXPECT_EQ(v.by_group_mm3[g], nearest_double(expected[g] / 6))
+        EXPECT_EQ(v.by_group_mm3[g], test::nearest_double(expected[g] / 6))
             << "spread " << spread << " seed " << seed << " group " << g;
         total += expected[g];
       }
-      EXPECT_EQ(v.total_mm3, nearest_double(total / 6)) << "spread " << spread;
+      EXPECT_EQ(v.total_mm3, test::nearest_double(total / 6)) << "spread " << spread;
     }
   }
 }
@@ -181,7 +171,7 @@ TEST(ExactSignedVolumes, SubnormalAndNegativeCoordinatesSumAsRationalsDo) {
                 mpq_class(a.z) * (mpq_class(b.x) * c.y - mpq_class(b.y) * c.x);
   }
   const ExactVolumes v = exact_signed_volumes(mesh, std::vector<std::uint32_t>(4, 0), 1);
-  EXPECT_EQ(v.total_mm3, nearest_double(expected / 6));
+  EXPECT_EQ(v.total_mm3, test::nearest_double(expected / 6));
   EXPECT_NE(v.total_mm3, 0.0);
 }
 

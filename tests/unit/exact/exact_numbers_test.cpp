@@ -9,7 +9,6 @@
 #endif
 
 #include <gtest/gtest.h>
-#include <mpfr.h>
 
 #include <cmath>
 #include <limits>
@@ -17,6 +16,7 @@
 #include <type_traits>
 
 #include "exact/exact_numbers_internal.hpp"
+#include "support/nearest_double.hpp"
 
 namespace strata::exact::detail {
 namespace {
@@ -71,16 +71,6 @@ TEST(RoundToDouble, RoundsJustAboveTheNormalRangesLowerEndOnce) {
   EXPECT_EQ(rounded(tie), smallest_normal);
 }
 
-/// MPFR's correctly rounded division at 53 bits, for values in the normal range.
-double mpfr_rounded(const mpq_class& q) {
-  mpfr_t r;
-  mpfr_init2(r, 53);
-  mpfr_set_q(r, q.get_mpq_t(), MPFR_RNDN);
-  const double d = mpfr_get_d(r, MPFR_RNDN);
-  mpfr_clear(r);
-  return d;
-}
-
 /// A random integer of 1 to `max_bits` bits, of either sign.
 mpz_class random_integer(std::mt19937_64& random, int max_bits) {
   const int bits = std::uniform_int_distribution<int>(1, max_bits)(random);
@@ -110,7 +100,7 @@ TEST(RoundToDouble, AgreesWithMpfrOnRandomQuotients) {
     mpz_class den = abs(random_integer(random, 1 + (i / 7) % 150));
     mpq_class q(num, den);
     q.canonicalize();
-    ASSERT_EQ(rounded(q), mpfr_rounded(q)) << q.get_str();
+    ASSERT_EQ(rounded(q), test::nearest_double(q)) << q.get_str();
   }
 }
 
