@@ -380,20 +380,19 @@ Result<std::string> view_page_data(const ViewPage& page) {
     data["validation"] = validation_view(validation);
   }
 
-  // Invalid UTF-8 in a name (a path of the model) is replaced rather than refused.
+  // Invalid UTF-8 in a name (a path of the model) is replaced rather than refused. The document
+  // is escaped for its script element while the long texts, base64 and the layers, which hold
+  // no "<", are still their markers: once, over the rest of the document alone.
   const std::string text =
-      held.put_back(data.dump(-1, ' ', false, json::error_handler_t::replace));
+      held.put_back(escape_script_end(data.dump(-1, ' ', false, json::error_handler_t::replace)));
   // With its key: a name holding the marker's text is written with its quotes escaped.
   const std::string key = R"("layers":)";
   const std::string marker = key + json(kLayersMarker).dump();
   const std::size_t marker_at = text.find(marker);
   STRATA_ASSERT(marker_at != std::string::npos, "the layers' marker is in the page data");
-  // The layers' text holds no "<", and begins and ends with a brace: the document around it is
-  // escaped alone.
   const std::string_view document = text;
-  const std::size_t layers_at = marker_at + key.size();
-  return with_layers_text(escape_script_end(document.substr(0, layers_at)), page.stack,
-                          escape_script_end(document.substr(marker_at + marker.size())));
+  return with_layers_text(document.substr(0, marker_at + key.size()), page.stack,
+                          document.substr(marker_at + marker.size()));
 }
 
 std::string view_page_with_data(std::string_view data) {
