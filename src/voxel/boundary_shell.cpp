@@ -343,10 +343,7 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
       patch.vertex_lo = {std::min(patch.vertex_lo.x, p.x), std::min(patch.vertex_lo.y, p.y), 0.0};
       patch.vertex_hi = {std::max(patch.vertex_hi.x, p.x), std::max(patch.vertex_hi.y, p.y), 0.0};
     }
-  });
-  // A patch's slab serves every layer: the facets a layer tests are some of the patch's.
-  tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t q) {
-    Patch& patch = patches[q];
+    // A patch's slab serves every layer: the facets a layer tests are some of the patch's.
     patch.slab =
         slab_of(std::span(triangles_by_patch_).subspan(patch.begin, patch.end - patch.begin),
                 vertices_by_patch_);
