@@ -10,6 +10,10 @@
 
 namespace strata::diagnose::detail {
 
+/// The compilers' 128-bit integer, for one limb's product or sum with its carry; __extension__
+/// says it is meant (-Wpedantic).
+__extension__ typedef unsigned __int128 UInt128;
+
 /// An unsigned integer, least significant limb first.
 template <std::size_t N>
 using Limbs = std::array<std::uint64_t, N>;
@@ -23,11 +27,10 @@ struct SignedLimbs {
 
 /// a b c, exact. @pre a b c < 2^192 (three mantissas of doubles, say).
 inline Limbs<3> multiply(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
-  const unsigned __int128 ab = static_cast<unsigned __int128>(a) * b;
-  const unsigned __int128 low = static_cast<unsigned __int128>(static_cast<std::uint64_t>(ab)) * c;
-  const unsigned __int128 high =
-      static_cast<unsigned __int128>(static_cast<std::uint64_t>(ab >> 64)) * c;
-  const unsigned __int128 middle = (low >> 64) + static_cast<std::uint64_t>(high);
+  const UInt128 ab = static_cast<UInt128>(a) * b;
+  const UInt128 low = static_cast<UInt128>(static_cast<std::uint64_t>(ab)) * c;
+  const UInt128 high = static_cast<UInt128>(static_cast<std::uint64_t>(ab >> 64)) * c;
+  const UInt128 middle = (low >> 64) + static_cast<std::uint64_t>(high);
   return {static_cast<std::uint64_t>(low), static_cast<std::uint64_t>(middle),
           static_cast<std::uint64_t>(high >> 64) + static_cast<std::uint64_t>(middle >> 64)};
 }
@@ -38,7 +41,7 @@ void add_to(Limbs<N>& acc, const Limbs<M>& v) {
   static_assert(M <= N);
   std::uint64_t carry = 0;
   for (std::size_t i = 0; i < N; ++i) {
-    const unsigned __int128 t = static_cast<unsigned __int128>(acc[i]) + (i < M ? v[i] : 0) + carry;
+    const UInt128 t = static_cast<UInt128>(acc[i]) + (i < M ? v[i] : 0) + carry;
     acc[i] = static_cast<std::uint64_t>(t);
     carry = static_cast<std::uint64_t>(t >> 64);
   }
@@ -96,8 +99,7 @@ class ShiftedProductSum {
     std::uint64_t carry = negative ? 1 : 0;
     std::uint64_t* at = limbs_.data() + limb;
     for (std::size_t k = 0; k < 4; ++k) {
-      const unsigned __int128 t =
-          static_cast<unsigned __int128>(at[k]) + (shifted[k] ^ flip) + carry;
+      const UInt128 t = static_cast<UInt128>(at[k]) + (shifted[k] ^ flip) + carry;
       at[k] = static_cast<std::uint64_t>(t);
       carry = static_cast<std::uint64_t>(t >> 64);
     }
@@ -113,9 +115,8 @@ class ShiftedProductSum {
       const std::uint64_t extension = count < 0 ? ~std::uint64_t{0} : 0;
       std::uint64_t carry = 0;
       for (std::size_t i = limb + 4; i < N; ++i) {
-        const unsigned __int128 t =
-            static_cast<unsigned __int128>(out[i]) +
-            (i == limb + 4 ? static_cast<std::uint64_t>(count) : extension) + carry;
+        const UInt128 t = static_cast<UInt128>(out[i]) +
+                          (i == limb + 4 ? static_cast<std::uint64_t>(count) : extension) + carry;
         out[i] = static_cast<std::uint64_t>(t);
         carry = static_cast<std::uint64_t>(t >> 64);
       }
