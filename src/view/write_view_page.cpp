@@ -48,7 +48,7 @@ class HeldTexts {
     std::string marker = fmt::format("\x01strata-held-{}\x01", texts_.size());
     // As a value it follows its key's colon: a name holding the marker's text has its quotes
     // escaped, and never matches.
-    patterns_.push_back(":" + json(marker).dump());
+    patterns_.push_back(std::string(":").append(json(marker).dump()));
     texts_.push_back(std::move(text));
     return marker;
   }
