@@ -1,17 +1,22 @@
 #include "strata/io/read_mesh.hpp"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 #include "core/huge_pages.hpp"
 #include "io/read_mesh_internal.hpp"
@@ -93,12 +98,33 @@ bool starts_with_zip_magic(std::string_view bytes) {
   return bytes.substr(0, 4) == std::string_view("PK\x03\x04", 4);
 }
 
+bool has_unsupported_extension(std::string_view ext) {
+  return ext == ".amf" || ext == ".zip" || ext == ".ctm" || ext == ".step" || ext == ".stp" ||
+         ext == ".iges" || ext == ".igs" || ext == ".fbx" || ext == ".dae" || ext == ".gltf" ||
+         ext == ".glb" || ext == ".3ds" || ext == ".x3d" || ext == ".wrl";
+}
+
+/// Whether uncompressed content beginning with `head` (its first 84 bytes at least, where it has
+/// them), `size` bytes in all, is read as a binary STL: decided from the head alone, so that a
+/// file can be read a block of records at a time. Not a 3MF or zip, a size that fits the
+/// header's facet count, not an extension of a format we refuse, not PLY.
+bool reads_as_binary_stl(std::string_view head, std::uint64_t size, std::string_view inner_name) {
+  const std::string ext = extension_of(inner_name);
+  if (ext == ".3mf" || starts_with_zip_magic(head)) return false;
+  const detail::StlBinaryFit fit = detail::stl_binary_layout(head, size).fit;
+  return (fit == detail::StlBinaryFit::Exact || fit == detail::StlBinaryFit::TrailingBytes) &&
+         !has_unsupported_extension(ext) && !starts_with_ply_magic(head);
+}
+
 /// Dispatch on uncompressed bytes; `inner_name` is the name without `.gz`. A 3MF soup is in
 /// millimetres already (the file states its unit); the other formats are scaled by the caller.
 Result<TriangleSoup> read_uncompressed(std::string_view bytes, std::string_view name,
                                        std::string_view inner_name, const ReadLimits& limits,
                                        const CoordinateScale& scale) {
   if (bytes.empty()) return bad_input(name, "empty file (0 bytes)");
+  if (reads_as_binary_stl(bytes, bytes.size(), inner_name)) {
+    return read_stl_bytes(bytes, name, limits);
+  }
   // A 3MF file is a zip archive: its name decides, or, without an extension, its zip magic.
   // Before the text decoding below, which would take a zip's bytes for text.
   const std::string ext = extension_of(inner_name);
@@ -123,9 +149,7 @@ Result<TriangleSoup> read_uncompressed(std::string_view bytes, std::string_view 
       return soup;
     }
   }
-  if (ext == ".amf" || ext == ".zip" || ext == ".ctm" || ext == ".step" || ext == ".stp" ||
-      ext == ".iges" || ext == ".igs" || ext == ".fbx" || ext == ".dae" || ext == ".gltf" ||
-      ext == ".glb" || ext == ".3ds" || ext == ".x3d" || ext == ".wrl") {
+  if (has_unsupported_extension(ext)) {
     return unsupported(name, fmt::format("'{}' files", ext));
   }
   if (starts_with_ply_magic(bytes)) return detail::read_ply_bytes(bytes, name, limits);
@@ -200,15 +224,67 @@ Result<TriangleSoup> read_any(std::string_view bytes, std::string_view name,
   return soup;
 }
 
-}  // namespace
-
-Result<TriangleSoup> read_mesh_bytes(std::string_view bytes, std::string_view name,
-                                     const ReadLimits& limits, const CoordinateScale& scale) {
+Result<void> check_scale(const CoordinateScale& scale) {
   if (!(scale.scale > 0.0) || !std::isfinite(scale.scale)) {
     return Error{ErrorCode::Usage,
                  fmt::format("the scale factor must be a finite number > 0, got {}", scale.scale),
                  {}};
   }
+  return {};
+}
+
+/// A file descriptor closed when it goes out of scope.
+class OpenFile {
+ public:
+  explicit OpenFile(const std::filesystem::path& path)
+      : fd_(::open(path.c_str(), O_RDONLY | O_CLOEXEC)) {}
+  OpenFile(const OpenFile&) = delete;
+  OpenFile& operator=(const OpenFile&) = delete;
+  ~OpenFile() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  int fd() const { return fd_; }
+
+  /// Reads `length` bytes at `offset`; false on an error or when the file ends first.
+  bool read_at(char* into, std::size_t length, std::uint64_t offset) const {
+    while (length > 0) {
+      const ssize_t got = ::pread(fd_, into, length, static_cast<off_t>(offset));
+      if (got < 0 && errno == EINTR) continue;
+      if (got <= 0) return false;
+      into += got;
+      length -= static_cast<std::size_t>(got);
+      offset += static_cast<std::uint64_t>(got);
+    }
+    return true;
+  }
+
+ private:
+  int fd_;
+};
+
+/// A binary STL file read a block of records at a time, each block straight into the converting
+/// thread's scratch: the file is never held whole, and the copy out of the page cache is shared
+/// among the threads.
+Result<TriangleSoup> read_binary_stl_file(const OpenFile& file, std::string_view head,
+                                          std::uint64_t size, std::string_view name,
+                                          const ReadLimits& limits) {
+  const auto blocks = [&file](std::uint32_t first, std::uint32_t count,
+                              std::vector<char>& scratch) -> const char* {
+    const std::size_t bytes = std::size_t{count} * detail::kStlBinaryFacetBytes;
+    if (scratch.size() < bytes) scratch.resize(bytes);
+    const std::uint64_t offset =
+        detail::kStlBinaryHeaderBytes + std::uint64_t{first} * detail::kStlBinaryFacetBytes;
+    return file.read_at(scratch.data(), bytes, offset) ? scratch.data() : nullptr;
+  };
+  return detail::read_stl_records(blocks, size, name, detail::stl_binary_layout(head, size),
+                                  limits);
+}
+
+}  // namespace
+
+Result<TriangleSoup> read_mesh_bytes(std::string_view bytes, std::string_view name,
+                                     const ReadLimits& limits, const CoordinateScale& scale) {
+  if (auto checked = check_scale(scale); !checked) return checked.error();
   Result<TriangleSoup> soup = read_any(bytes, name, limits, scale);
   if (!soup) return soup;
   if (auto scaled = apply_scale(*soup, name, scale); !scaled) return scaled.error();
@@ -226,29 +302,53 @@ Result<TriangleSoup> read_mesh(const std::filesystem::path& path, const ReadLimi
   if (std::filesystem::is_directory(status)) {
     return bad_input(name, "cannot read: it is a directory, not a file");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return bad_input(name, fmt::format("cannot open: {}", std::strerror(errno)));
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  in.seekg(0, std::ios::beg);
-  // A file of known size is read straight into storage that is not zeroed first, advised to
-  // huge pages: a million facets are 50 MB, whose zeroing and page faults cost as much as the
-  // parsing.
+  const OpenFile file(path);
+  if (file.fd() < 0) return bad_input(name, fmt::format("cannot open: {}", std::strerror(errno)));
+  struct stat info {};
+  if (::fstat(file.fd(), &info) != 0) {
+    return bad_input(name, fmt::format("cannot read: {}", std::strerror(errno)));
+  }
   std::unique_ptr<char[]> buffer;
   std::string streamed;
   std::string_view bytes;
-  if (size > 0) {
+  if (S_ISREG(info.st_mode) && info.st_size > 0) {
+    const auto size = static_cast<std::uint64_t>(info.st_size);
+    std::array<char, detail::kStlBinaryHeaderBytes> head_bytes{};
+    const std::size_t head_size = std::min<std::uint64_t>(size, head_bytes.size());
+    errno = 0;
+    if (!file.read_at(head_bytes.data(), head_size, 0)) {
+      return bad_input(name, fmt::format("cannot read: {}", errno != 0 ? std::strerror(errno)
+                                                                       : "the file got shorter"));
+    }
+    const std::string_view head(head_bytes.data(), head_size);
+    if (!detail::is_gzip(head) && reads_as_binary_stl(head, size, name)) {
+      if (auto checked = check_scale(scale); !checked) return checked.error();
+      Result<TriangleSoup> soup = read_binary_stl_file(file, head, size, name, limits);
+      if (!soup) return soup;
+      if (auto scaled = apply_scale(*soup, name, scale); !scaled) return scaled.error();
+      return soup;
+    }
+    // Any other file is read whole into storage that is not zeroed first, advised to huge pages
+    // when it is large.
     const auto length = static_cast<std::size_t>(size);
     buffer = std::make_unique_for_overwrite<char[]>(length);
     advise_huge_pages(buffer.get(), length);
-    if (!in.read(buffer.get(), size)) {
-      return bad_input(name, fmt::format("cannot read: {}", std::strerror(errno)));
+    errno = 0;
+    if (!file.read_at(buffer.get(), length, 0)) {
+      return bad_input(name, fmt::format("cannot read: {}", errno != 0 ? std::strerror(errno)
+                                                                       : "the file got shorter"));
     }
     bytes = std::string_view(buffer.get(), length);
-  } else if (size < 0) {
-    // Not seekable (a pipe, /dev/stdin): read it as a stream.
-    in.clear();
-    streamed.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  } else if (!S_ISREG(info.st_mode)) {
+    // Not a regular file (a pipe, /dev/stdin): read it as a stream.
+    std::array<char, 65536> chunk{};
+    for (;;) {
+      const ssize_t got = ::read(file.fd(), chunk.data(), chunk.size());
+      if (got < 0 && errno == EINTR) continue;
+      if (got < 0) return bad_input(name, fmt::format("cannot read: {}", std::strerror(errno)));
+      if (got == 0) break;
+      streamed.append(chunk.data(), static_cast<std::size_t>(got));
+    }
     bytes = streamed;
   }
   if (bytes.empty()) return bad_input(name, "empty file (0 bytes)");

@@ -1,6 +1,7 @@
 // STL reading: binary and ASCII, told apart by content (SPEC §2, STYLE §4).
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -55,8 +56,10 @@ float load_float32_le(const char* p) {
   return std::bit_cast<float>(detail::get_u32_le(reinterpret_cast<const unsigned char*>(p)));
 }
 
-Result<TriangleSoup> read_stl_binary(std::string_view bytes, std::string_view name,
-                                     const StlBinaryLayout& layout, const ReadLimits& limits) {
+/// The records of a binary STL, converted in parallel a block at a time.
+Result<TriangleSoup> read_binary_records(const detail::StlRecordBlocks& blocks, std::uint64_t size,
+                                         std::string_view name, const StlBinaryLayout& layout,
+                                         const ReadLimits& limits) {
   const std::uint32_t count = layout.declared_facets;
   if (count == 0) {
     return bad_input(std::string(name), "no facets: the binary STL header declares 0 facets");
@@ -71,13 +74,16 @@ Result<TriangleSoup> read_stl_binary(std::string_view bytes, std::string_view na
   TriangleSoup soup;
   soup.format = "stl-binary";
   DiagnosticTally tally("facet");
-  const auto record_of = [&](std::uint32_t f) {
-    return bytes.data() + kStlBinaryHeaderBytes + std::size_t{f} * kStlBinaryFacetBytes;
-  };
-  const auto load = [&](std::uint32_t f) {
+  const auto load = [](const char* record) {
     std::array<float, 12> v{};
-    for (std::size_t k = 0; k < v.size(); ++k) v[k] = load_float32_le(record_of(f) + 4 * k);
+    for (std::size_t k = 0; k < v.size(); ++k) v[k] = load_float32_le(record + 4 * k);
     return v;
+  };
+  const auto unreadable = [&](std::uint32_t first, std::uint32_t end) {
+    return bad_input(
+        facet_location(name, first),
+        fmt::format("cannot read facets {} to {}: the file changed or failed while it was read",
+                    first, end - 1));
   };
   const auto finite = [](const float* p) {
     return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
@@ -91,11 +97,21 @@ Result<TriangleSoup> read_stl_binary(std::string_view bytes, std::string_view na
   soup.stored_normals.resize(count);
   std::atomic<std::uint32_t> first_bad_corner{count};
   std::atomic<bool> any_bad_normal{false};
+  std::atomic<std::uint32_t> first_unread{count};
+  tbb::enumerable_thread_specific<std::vector<char>> scratches;
   tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, count, 16384), [&](const auto& range) {
+    const char* records = blocks(range.begin(), range.end() - range.begin(), scratches.local());
+    if (records == nullptr) {
+      for (std::uint32_t seen = first_unread.load();
+           range.begin() < seen && !first_unread.compare_exchange_weak(seen, range.begin());) {
+      }
+      return;
+    }
     std::uint32_t bad_corner = count;
     bool bad_normal = false;
     for (std::uint32_t f = range.begin(); f < range.end(); ++f) {
-      const std::array<float, 12> v = load(f);
+      const std::array<float, 12> v =
+          load(records + std::size_t{f - range.begin()} * kStlBinaryFacetBytes);
       std::array<Vec3, 3>& triangle = soup.triangles[f];
       for (int c = 0; c < 3; ++c) {
         const float* p = v.data() + 3 + 3 * c;
@@ -115,8 +131,14 @@ Result<TriangleSoup> read_stl_binary(std::string_view bytes, std::string_view na
     if (bad_normal) any_bad_normal = true;
   });
 
+  if (const std::uint32_t f = first_unread.load(); f < count) {
+    return unreadable(f, static_cast<std::uint32_t>(std::min<std::uint64_t>(count, f + 16384ull)));
+  }
+  std::vector<char> scratch;
   if (const std::uint32_t f = first_bad_corner.load(); f < count) {
-    const std::array<float, 12> v = load(f);
+    const char* record = blocks(f, 1, scratch);
+    if (record == nullptr) return unreadable(f, f + 1);
+    const std::array<float, 12> v = load(record);
     for (int c = 0; c < 3; ++c) {
       const float* p = v.data() + 3 + 3 * c;
       if (finite(p)) continue;
@@ -126,9 +148,15 @@ Result<TriangleSoup> read_stl_binary(std::string_view bytes, std::string_view na
                                    c, p[0], p[1], p[2]));
     }
   }
-  if (any_bad_normal) {
-    for (std::uint32_t f = 0; f < count; ++f) {
-      const std::array<float, 12> v = load(f);
+  // Read again a block at a time, only when some normal is not finite: rare.
+  constexpr std::uint32_t kBlock = 16384;
+  for (std::uint64_t block = 0; any_bad_normal && block < count; block += kBlock) {
+    const auto first = static_cast<std::uint32_t>(block);
+    const std::uint32_t n = std::min(kBlock, count - first);
+    const char* records = blocks(first, n, scratch);
+    if (records == nullptr) return unreadable(first, first + n);
+    for (std::uint32_t f = first; f < first + n; ++f) {
+      const std::array<float, 12> v = load(records + std::size_t{f - first} * kStlBinaryFacetBytes);
       if (finite(v.data())) continue;
       tally.add("stl.bad_normal", Severity::Warning, f, [&] {
         return fmt::format(
@@ -145,7 +173,7 @@ Result<TriangleSoup> read_stl_binary(std::string_view bytes, std::string_view na
         fmt::format("{}: {} stray byte{} after the last of the {} declared facets ignored ({} of "
                     "{} bytes used)",
                     name, layout.trailing_bytes, layout.trailing_bytes == 1 ? "" : "s", count,
-                    layout.expected_bytes, bytes.size())});
+                    layout.expected_bytes, size)});
   }
   tally.flush_into(soup.diagnostics);
   return soup;
@@ -484,14 +512,17 @@ Result<TriangleSoup> AsciiStlParser::parse() {
 namespace detail {
 
 StlBinaryLayout stl_binary_layout(std::string_view bytes) {
+  return stl_binary_layout(bytes, bytes.size());
+}
+
+StlBinaryLayout stl_binary_layout(std::string_view head, std::uint64_t size) {
   StlBinaryLayout layout;
-  if (bytes.size() < kStlBinaryHeaderBytes) return layout;
+  if (size < kStlBinaryHeaderBytes || head.size() < kStlBinaryHeaderBytes) return layout;
   const std::uint32_t count =
-      detail::get_u32_le(reinterpret_cast<const unsigned char*>(bytes.data() + 80));
+      detail::get_u32_le(reinterpret_cast<const unsigned char*>(head.data() + 80));
   layout.declared_facets = count;
   layout.expected_bytes =
       kStlBinaryHeaderBytes + std::uint64_t{kStlBinaryFacetBytes} * std::uint64_t{count};
-  const std::uint64_t size = bytes.size();
   if (size == layout.expected_bytes) {
     layout.fit = StlBinaryFit::Exact;
   } else if (size > layout.expected_bytes && size - layout.expected_bytes < kStlBinaryFacetBytes) {
@@ -501,6 +532,12 @@ StlBinaryLayout stl_binary_layout(std::string_view bytes) {
     layout.fit = StlBinaryFit::Mismatch;
   }
   return layout;
+}
+
+Result<TriangleSoup> read_stl_records(const StlRecordBlocks& blocks, std::uint64_t size,
+                                      std::string_view name, const StlBinaryLayout& layout,
+                                      const ReadLimits& limits) {
+  return read_binary_records(blocks, size, name, layout, limits);
 }
 
 bool starts_with_solid(std::string_view bytes) {
@@ -519,7 +556,11 @@ Result<TriangleSoup> read_stl_bytes(std::string_view bytes, std::string_view nam
 
   const StlBinaryLayout layout = detail::stl_binary_layout(bytes);
   if (layout.fit == StlBinaryFit::Exact || layout.fit == StlBinaryFit::TrailingBytes) {
-    return read_stl_binary(bytes, name, layout, limits);
+    // In memory already: a block is a pointer into the bytes.
+    const auto blocks = [bytes](std::uint32_t first, std::uint32_t, std::vector<char>&) {
+      return bytes.data() + kStlBinaryHeaderBytes + std::size_t{first} * kStlBinaryFacetBytes;
+    };
+    return read_binary_records(blocks, bytes.size(), name, layout, limits);
   }
 
   std::string ascii_note;

@@ -2,7 +2,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string_view>
+#include <vector>
+
+#include "strata/core/result.hpp"
+#include "strata/io/read_mesh.hpp"
+#include "strata/mesh/triangle_soup.hpp"
 
 namespace strata::io::detail {
 
@@ -29,6 +35,20 @@ struct StlBinaryLayout {
 
 /// Reads the binary header count and compares it with the size. Decides nothing about ASCII.
 StlBinaryLayout stl_binary_layout(std::string_view bytes);
+
+/// The same from a file's first bytes (its first 84, when it has them) and its whole size.
+StlBinaryLayout stl_binary_layout(std::string_view head, std::uint64_t size);
+
+/// Binary STL records a block at a time: a pointer to the `count` records from facet `first` on,
+/// copied into `scratch` where they must be; nullptr when they cannot be read.
+using StlRecordBlocks = std::function<const char*(std::uint32_t first, std::uint32_t count,
+                                                  std::vector<char>& scratch)>;
+
+/// Reads a binary STL of this layout (Exact or TrailingBytes) of `size` bytes in all, whose
+/// records come from `blocks`: from memory, or from a file without holding all of it.
+Result<TriangleSoup> read_stl_records(const StlRecordBlocks& blocks, std::uint64_t size,
+                                      std::string_view name, const StlBinaryLayout& layout,
+                                      const ReadLimits& limits);
 
 /// True when the bytes begin with `solid` (any case) after an optional UTF-8 byte order mark and
 /// optional whitespace: the precondition for trying the ASCII grammar.

@@ -29,12 +29,6 @@ using test::mesh_object_xml;
 using test::model_xml;
 using test::signed_volume;
 
-void write_bytes(const fs::path& path, const std::string& bytes) {
-  std::ofstream out(path, std::ios::binary);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  ASSERT_TRUE(out.good()) << path;
-}
-
 /// A package of one 10 x 20 x 30 box (object 1) in `unit`, placed by `items`.
 std::string box_package(std::string_view unit, std::string_view items) {
   const test::BoxMesh box = test::make_box_mesh(10, 20, 30);
@@ -64,7 +58,7 @@ TEST(Read3mf, BuildItemAndNestedComponentTransformsApply) {
       mesh_object_xml(1, box.vertices, box.triangles) +
       components_object_xml(2, {{1, "1 0 0 0 1 0 0 0 1 10 0 0"}}) +
       components_object_xml(3, {{2, "0 2 0 -2 0 0 0 0 2 0 0 0"}, {1, ""}});
-  write_bytes(
+  test::write_file(
       tmp / "nested.3mf",
       make_3mf(model_xml("millimeter", resources, build_item_xml(3, "1 0 0 0 1 0 0 0 1 0 0 5"))));
   const auto soup = read_mesh(tmp / "nested.3mf");
@@ -83,9 +77,9 @@ TEST(Read3mf, BuildItemAndNestedComponentTransformsApply) {
 TEST(Read3mf, InchAndMetreFilesEqualTheMillimetreFileScaled) {
   const test::TempDir tmp("3mf");
   const std::string items = build_item_xml(1, "1 0 0 0 1 0 0 0 1 1 2 3");
-  write_bytes(tmp / "mm.3mf", box_package("millimeter", items));
-  write_bytes(tmp / "in.3mf", box_package("inch", items));
-  write_bytes(tmp / "m.3mf", box_package("meter", items));
+  test::write_file(tmp / "mm.3mf", box_package("millimeter", items));
+  test::write_file(tmp / "in.3mf", box_package("inch", items));
+  test::write_file(tmp / "m.3mf", box_package("meter", items));
   const auto mm = read_mesh(tmp / "mm.3mf");
   ASSERT_TRUE(mm) << mm.error().to_string();
   for (const auto& [file, factor] :
@@ -106,7 +100,7 @@ TEST(Read3mf, InchAndMetreFilesEqualTheMillimetreFileScaled) {
 
 TEST(Read3mf, AUnitAskedForIsRefusedAndAScaleFactorApplies) {
   const test::TempDir tmp("3mf");
-  write_bytes(tmp / "in.3mf", box_package("inch", build_item_xml(1)));
+  test::write_file(tmp / "in.3mf", box_package("inch", build_item_xml(1)));
   const auto refused = read_mesh(tmp / "in.3mf", {}, CoordinateScale{LengthUnit::Centimetre, 1.0});
   ASSERT_FALSE(refused);
   EXPECT_EQ(refused.error().code, ErrorCode::Usage);
@@ -127,7 +121,7 @@ TEST(Read3mf, MultipleObjectsAndBuildItems) {
                                 mesh_object_xml(2, large.vertices, large.triangles);
   const std::string items = build_item_xml(2) + build_item_xml(1, "1 0 0 0 1 0 0 0 1 10 0 0") +
                             build_item_xml(1, "1 0 0 0 1 0 0 0 1 20 0 0");
-  write_bytes(tmp / "three.3mf", make_3mf(model_xml("millimeter", resources, items)));
+  test::write_file(tmp / "three.3mf", make_3mf(model_xml("millimeter", resources, items)));
   const auto soup = read_mesh(tmp / "three.3mf");
   ASSERT_TRUE(soup) << soup.error().to_string();
   ASSERT_EQ(soup->triangles.size(), 36u);
@@ -179,7 +173,7 @@ TEST(Read3mf, AFileWrittenByLib3mfsWriterReads) {
 
 TEST(Read3mf, NotAZipArchive) {
   const test::TempDir tmp("3mf");
-  write_bytes(tmp / "text.3mf", "solid but not a zip\n");
+  test::write_file(tmp / "text.3mf", "solid but not a zip\n");
   const Error e = read_error(tmp / "text.3mf");
   EXPECT_EQ(e.code, ErrorCode::BadInput);
   EXPECT_EQ(e.location, (tmp / "text.3mf").string());
@@ -191,7 +185,7 @@ TEST(Read3mf, NotAZipArchive) {
 TEST(Read3mf, ATruncatedArchive) {
   const test::TempDir tmp("3mf");
   const std::string whole = box_package("millimeter", build_item_xml(1));
-  write_bytes(tmp / "cut.3mf", whole.substr(0, whole.size() / 2));
+  test::write_file(tmp / "cut.3mf", whole.substr(0, whole.size() / 2));
   EXPECT_EQ(read_error(tmp / "cut.3mf").message,
             "not a 3MF file: not a zip archive, or a damaged one (lib3mf: Could not read ZIP "
             "file)");
@@ -202,7 +196,7 @@ TEST(Read3mf, AZipWithoutAModelPart) {
   auto parts = test::package_parts(model_xml("millimeter", "", ""));
   ASSERT_EQ(parts.back().first, "3D/3dmodel.model");
   parts.pop_back();
-  write_bytes(tmp / "empty.3mf", test::make_zip(parts));
+  test::write_file(tmp / "empty.3mf", test::make_zip(parts));
   const Error e = read_error(tmp / "empty.3mf");
   EXPECT_EQ(e.location, (tmp / "empty.3mf").string());
   EXPECT_EQ(e.message,
@@ -223,7 +217,7 @@ TEST(Read3mf, AMissingThumbnailTheRelationshipsNameIsAWarning) {
       "Type=\"http://schemas.openxmlformats.org/package/2006/relationships/metadata/"
       "thumbnail\"/>";
   parts[1].second.insert(parts[1].second.find("</Relationships>"), thumbnail);
-  write_bytes(tmp / "no_thumbnail.3mf", test::make_zip(parts));
+  test::write_file(tmp / "no_thumbnail.3mf", test::make_zip(parts));
   const auto soup = read_mesh(tmp / "no_thumbnail.3mf");
   ASSERT_TRUE(soup) << soup.error().to_string();
   EXPECT_EQ(soup->triangles.size(), 12u);
@@ -240,7 +234,7 @@ TEST(Read3mf, BrokenXml) {
   std::string xml =
       model_xml("millimeter", mesh_object_xml(1, box.vertices, box.triangles), build_item_xml(1));
   xml.replace(xml.find("</build>"), 8, "</build");
-  write_bytes(tmp / "broken.3mf", make_3mf(xml));
+  test::write_file(tmp / "broken.3mf", make_3mf(xml));
   const Error e = read_error(tmp / "broken.3mf");
   EXPECT_EQ(e.location, (tmp / "broken.3mf").string());
   EXPECT_EQ(e.message, "the 3MF model's XML is malformed (lib3mf: Could not end XML element)");
@@ -250,9 +244,9 @@ TEST(Read3mf, ATriangleIndexOutOfRange) {
   const test::TempDir tmp("3mf");
   test::BoxMesh box = test::make_box_mesh(1, 1, 1);
   box.triangles[5][2] = 8;
-  write_bytes(tmp / "index.3mf",
-              make_3mf(model_xml("millimeter", mesh_object_xml(1, box.vertices, box.triangles),
-                                 build_item_xml(1))));
+  test::write_file(tmp / "index.3mf",
+                   make_3mf(model_xml("millimeter", mesh_object_xml(1, box.vertices, box.triangles),
+                                      build_item_xml(1))));
   const Error e = read_error(tmp / "index.3mf");
   EXPECT_EQ(e.code, ErrorCode::BadInput);
   EXPECT_EQ(e.location, (tmp / "index.3mf").string());
@@ -263,7 +257,7 @@ TEST(Read3mf, ATriangleIndexOutOfRange) {
 
 TEST(Read3mf, NoMeshObjects) {
   const test::TempDir tmp("3mf");
-  write_bytes(tmp / "none.3mf", make_3mf(model_xml("millimeter", "", "")));
+  test::write_file(tmp / "none.3mf", make_3mf(model_xml("millimeter", "", "")));
   Error e = read_error(tmp / "none.3mf");
   EXPECT_EQ(e.location, (tmp / "none.3mf").string());
   EXPECT_EQ(e.message, "no mesh to slice: the 3MF build has no item");
@@ -271,15 +265,15 @@ TEST(Read3mf, NoMeshObjects) {
   const std::string empty_mesh =
       "<object id=\"1\" type=\"model\"><mesh><vertices></vertices><triangles></triangles>"
       "</mesh></object>";
-  write_bytes(tmp / "empty_mesh.3mf",
-              make_3mf(model_xml("millimeter", empty_mesh, build_item_xml(1))));
+  test::write_file(tmp / "empty_mesh.3mf",
+                   make_3mf(model_xml("millimeter", empty_mesh, build_item_xml(1))));
   e = read_error(tmp / "empty_mesh.3mf");
   EXPECT_EQ(e.message, "no mesh to slice: the objects of the 3MF build's 1 item hold no triangle");
 }
 
 TEST(Read3mf, AnUnknownUnitIsRefused) {
   const test::TempDir tmp("3mf");
-  write_bytes(tmp / "parsec.3mf", box_package("parsec", build_item_xml(1)));
+  test::write_file(tmp / "parsec.3mf", box_package("parsec", build_item_xml(1)));
   EXPECT_EQ(read_error(tmp / "parsec.3mf").message,
             "the 3MF model's unit is not one of micron, millimeter, centimeter, inch, foot, meter "
             "(lib3mf: invalid model unit)");
@@ -310,8 +304,8 @@ TEST(Read3mf, CorpusStlsWrittenAs3mfSliceToTheSameCells) {
     const auto soup = read_mesh(stl);
     ASSERT_TRUE(soup) << soup.error().to_string();
     const fs::path three_mf = tmp / (stl.stem().string() + ".3mf");
-    write_bytes(three_mf,
-                make_3mf(model_xml("millimeter", mesh_object_xml(1, *soup), build_item_xml(1))));
+    test::write_file(
+        three_mf, make_3mf(model_xml("millimeter", mesh_object_xml(1, *soup), build_item_xml(1))));
     const auto again = read_mesh(three_mf);
     ASSERT_TRUE(again) << again.error().to_string();
     ASSERT_EQ(again->triangles, soup->triangles);
@@ -327,7 +321,7 @@ TEST(Read3mf, CorpusStlsWrittenAs3mfSliceToTheSameCells) {
 
 TEST(Read3mf, TheCommandLineChecksA3mfAndRefusesAUnitOptionOrABrokenFile) {
   const test::TempDir tmp("3mf");
-  write_bytes(tmp / "in.3mf", box_package("inch", build_item_xml(1)));
+  test::write_file(tmp / "in.3mf", box_package("inch", build_item_xml(1)));
   const auto check = test::run_cli({"check", (tmp / "in.3mf").string(), "--json"});
   ASSERT_EQ(check.exit_code, 0) << check.err;
   const auto report = nlohmann::json::parse(check.out);
@@ -341,7 +335,7 @@ TEST(Read3mf, TheCommandLineChecksA3mfAndRefusesAUnitOptionOrABrokenFile) {
                              "factor\n");
 
   // A broken 3MF: exit code 1, the file named, no output.
-  write_bytes(tmp / "broken.3mf", "not a zip");
+  test::write_file(tmp / "broken.3mf", "not a zip");
   const auto bad = test::run_cli(
       {"slice", (tmp / "broken.3mf").string(), "-o", (tmp / "out").string(), "--format", "cells"});
   EXPECT_EQ(bad.exit_code, 1);

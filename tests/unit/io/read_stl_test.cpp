@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cfloat>
 #include <cmath>
@@ -21,6 +22,8 @@
 #include "io/stl_format_internal.hpp"
 #include "strata/io/read_mesh.hpp"
 #include "support/mesh_reading.hpp"
+#include "support/read_file.hpp"
+#include "support/temp_dir.hpp"
 
 namespace strata::io {
 namespace {
@@ -436,6 +439,153 @@ TEST(ReadStlDetection, AsciiWithLeadingBlankLinesIsAscii) {
   ASSERT_TRUE(soup) << soup.error().to_string();
   EXPECT_EQ(soup->format, "stl-ascii");
   EXPECT_EQ(soup->triangles.size(), 1u);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Binary STL files, read a block of records at a time
+
+/// `count` facets of random coordinates; every 5,000th stored normal is NaN.
+std::vector<Facet> random_facets(std::size_t count, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> coordinate(-50.0f, 50.0f);
+  std::vector<Facet> facets(count);
+  for (std::size_t f = 0; f < count; ++f) {
+    for (float& v : facets[f].normal) v = coordinate(rng);
+    for (Float3& corner : facets[f].corners) {
+      for (float& v : corner) v = coordinate(rng);
+    }
+    if (f % 5000 == 17) facets[f].normal[1] = std::numeric_limits<float>::quiet_NaN();
+  }
+  return facets;
+}
+
+/// Reads `bytes` both from a file named `file_name` and from memory under the file's path, and
+/// expects the same soup, diagnostics and format, or the same error.
+void expect_file_reads_as_bytes(std::string_view file_name, const std::string& bytes,
+                                const CoordinateScale& scale = {}) {
+  SCOPED_TRACE(std::string(file_name));
+  const test::TempDir dir("read-stl");
+  const auto path = dir / std::string(file_name);
+  test::write_file(path, bytes);
+  const auto from_file = read_mesh(path, {}, scale);
+  const auto from_bytes = read_mesh_bytes(bytes, path.string(), {}, scale);
+  ASSERT_EQ(from_file.has_value(), from_bytes.has_value())
+      << (from_file ? from_bytes.error().to_string() : from_file.error().to_string());
+  if (!from_file) {
+    EXPECT_EQ(from_file.error().to_string(), from_bytes.error().to_string());
+    return;
+  }
+  EXPECT_TRUE(bit_identical(*from_file, *from_bytes));
+  EXPECT_EQ(from_file->format, from_bytes->format);
+  ASSERT_EQ(from_file->diagnostics.size(), from_bytes->diagnostics.size());
+  for (std::size_t i = 0; i < from_file->diagnostics.size(); ++i) {
+    EXPECT_EQ(from_file->diagnostics[i].code, from_bytes->diagnostics[i].code);
+    EXPECT_EQ(from_file->diagnostics[i].message, from_bytes->diagnostics[i].message);
+  }
+}
+
+TEST(ReadStlBinaryFile, AFileOfManyBlocksReadsAsItsBytesDo) {
+  // 40,000 facets are several blocks of records; NaN normals are warned of from every block.
+  const std::string bytes = binary_stl(random_facets(40000, 3), "blocks", std::nullopt, "xyz");
+  expect_file_reads_as_bytes("blocks.stl", bytes);
+  expect_file_reads_as_bytes("blocks.stl", bytes, CoordinateScale{LengthUnit::Centimetre, 1.5});
+  const auto soup = read_mesh_bytes(bytes, "blocks.stl");
+  ASSERT_TRUE(soup) << soup.error().to_string();
+  EXPECT_EQ(soup->triangles.size(), 40000u);
+  const Diagnostic* normals = find_diagnostic(*soup, "stl.bad_normal");
+  ASSERT_NE(normals, nullptr);
+  EXPECT_TRUE(contains(normals->message, "facet 17:")) << normals->message;
+  ASSERT_NE(find_diagnostic(*soup, "stl.trailing_bytes"), nullptr);
+}
+
+TEST(ReadStlBinaryFile, ANonFiniteCornerInALaterBlockNamesItsFacet) {
+  std::vector<Facet> facets = random_facets(40000, 4);
+  facets[33333].corners[2][0] = std::numeric_limits<float>::infinity();
+  facets[39999].corners[0][1] = std::numeric_limits<float>::quiet_NaN();
+  const std::string bytes = binary_stl(facets);
+  expect_file_reads_as_bytes("corner.stl", bytes);
+  const auto soup = read_mesh_bytes(bytes, "corner.stl");
+  ASSERT_FALSE(soup);
+  EXPECT_EQ(soup.error().location, "corner.stl: facet 33333");
+  EXPECT_TRUE(contains(soup.error().message, "corner 2 has a non-finite coordinate"))
+      << soup.error().message;
+}
+
+TEST(ReadStlBinaryFile, AFileIsDispatchedAsItsBytesAre) {
+  // What is decided from a file's first 84 bytes and its size must be what the whole bytes
+  // decide: names that refuse or choose a format, and heads of other formats that happen to
+  // fit a binary STL's size.
+  const std::vector<Facet> facets = two_facets();
+  const std::vector<std::string> contents = {
+      binary_stl(facets),
+      binary_stl(facets, "solid looks like text"),
+      binary_stl(facets, "ply\nformat binary_little_endian 1.0"),
+      binary_stl(facets, std::string("PK\x03\x04", 4)),
+      binary_stl(facets, std::string("\x1f\x8b", 2)),
+      binary_stl(facets, "x", 7),
+      binary_stl(facets, "x", std::nullopt, std::string(50, 'y')),
+      std::string(84, '\0'),
+      "solid",
+  };
+  for (const std::string& bytes : contents) {
+    for (const char* name : {"m.stl", "m.STL", "m.obj", "m.ply", "m.off", "m.amf", "m.3mf", "m"}) {
+      expect_file_reads_as_bytes(name, bytes);
+    }
+  }
+}
+
+TEST(ReadStlBinaryFile, RecordsThatCannotBeReadAreAnErrorNamingThem) {
+  // A file that shrinks or fails while its blocks are read: the error names the first facets
+  // not read, whichever block failed first.
+  const std::string bytes = binary_stl(random_facets(40000, 5));
+  const detail::StlBinaryLayout layout = detail::stl_binary_layout(bytes);
+  const auto from_memory = [&](std::uint32_t first) {
+    return bytes.data() + detail::kStlBinaryHeaderBytes +
+           std::size_t{first} * detail::kStlBinaryFacetBytes;
+  };
+  const auto failing_at = [&](std::uint32_t facet) -> detail::StlRecordBlocks {
+    return [&, facet](std::uint32_t first, std::uint32_t count, std::vector<char>&) {
+      return first <= facet && facet < first + count ? nullptr : from_memory(first);
+    };
+  };
+  const auto read =
+      detail::read_stl_records(failing_at(25000), bytes.size(), "gone.stl", layout, ReadLimits{});
+  ASSERT_FALSE(read);
+  unsigned first = 0;
+  unsigned last = 0;
+  ASSERT_EQ(std::sscanf(read.error().message.c_str(), "cannot read facets %u to %u", &first, &last),
+            2)
+      << read.error().message;
+  EXPECT_LE(first, 25000u);
+  EXPECT_GE(last, 25000u);
+  EXPECT_EQ(read.error().location, fmt::format("gone.stl: facet {}", first));
+  EXPECT_TRUE(contains(read.error().message, "changed or failed while it was read"));
+}
+
+TEST(ReadStlBinaryFile, RecordsThatCannotBeReadAgainAreAnError) {
+  // A non-finite corner or normal is read again for its message: a file that fails then is an
+  // error too, not a message made of other bytes.
+  std::vector<Facet> facets = random_facets(40000, 6);
+  facets[20001].corners[1][2] = std::numeric_limits<float>::infinity();
+  const std::string with_corner = binary_stl(facets);
+  const std::string with_normals = binary_stl(random_facets(40000, 7));
+  for (const std::string* bytes : {&with_corner, &with_normals}) {
+    // Every record may be read once: the parallel pass reads each exactly once, and a record
+    // read a second time is a reading again.
+    std::vector<std::atomic<bool>> read_before(40000);
+    const detail::StlRecordBlocks once = [&](std::uint32_t first, std::uint32_t count,
+                                             std::vector<char>&) -> const char* {
+      bool again = false;
+      for (std::uint32_t f = first; f < first + count; ++f) again |= read_before[f].exchange(true);
+      if (again) return nullptr;
+      return bytes->data() + detail::kStlBinaryHeaderBytes +
+             std::size_t{first} * detail::kStlBinaryFacetBytes;
+    };
+    const auto read = detail::read_stl_records(once, bytes->size(), "flaky.stl",
+                                               detail::stl_binary_layout(*bytes), ReadLimits{});
+    ASSERT_FALSE(read);
+    EXPECT_TRUE(contains(read.error().message, "cannot read facets")) << read.error().message;
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
