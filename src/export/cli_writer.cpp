@@ -103,12 +103,17 @@ class CliWriter final : public detail::SingleFileSink {
     }
     if (!layer.hatches.empty()) {
       fmt::format_to(std::back_inserter(s), "$$HATCHES/{},{}", kPartId, layer.hatches.size());
+      detail::RepeatedNumber row_y;
       for (const HatchSegment& h : layer.hatches) {
         const double y = run().grid.yc(h.row) + run().options.scan_offset_mm;
-        for (double v : {h.x_start, y, h.x_end, y}) {
-          s += ',';
-          detail::append_number(s, v);
-        }
+        s += ',';
+        detail::append_number(s, h.x_start);
+        s += ',';
+        row_y.append_to(s, y);
+        s += ',';
+        detail::append_number(s, h.x_end);
+        s += ',';
+        row_y.append_to(s, y);
         flush_if_large(out, s);
       }
       s += '\n';

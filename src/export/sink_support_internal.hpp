@@ -6,6 +6,7 @@
 #include <fmt/compile.h>
 #include <fmt/format.h>
 
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -183,5 +184,24 @@ inline void append_number(std::string& out, double v) {
   char* end = fmt::format_to(digits, FMT_COMPILE("{}"), v);
   out.append(digits, end);
 }
+
+/// A number written many times in a row (a scanline's y, once or twice for each of its row's
+/// hatches), formatted once for as long as it stays the same: the same text as append_number.
+class RepeatedNumber {
+ public:
+  void append_to(std::string& out, double v) {
+    const auto bits = std::bit_cast<std::uint64_t>(v);
+    if (length_ == 0 || bits != bits_) {
+      bits_ = bits;
+      length_ = static_cast<std::size_t>(fmt::format_to(digits_, FMT_COMPILE("{}"), v) - digits_);
+    }
+    out.append(digits_, length_);
+  }
+
+ private:
+  char digits_[32];
+  std::size_t length_ = 0;
+  std::uint64_t bits_ = 0;
+};
 
 }  // namespace strata::io::detail

@@ -128,11 +128,14 @@ class SvgWriter final : public detail::LayerFilesSink {
       s.clear();
       s += "<path class=\"hatch\" d=\"";
       bool first = true;
+      detail::RepeatedNumber row_y;
       for (const HatchSegment& h : layer.hatches) {
         const double y = g.yc(h.row) + run().options.scan_offset_mm;
         s += first ? "M " : " M ";
         first = false;
-        append_point(s, h.x_start, y);
+        detail::append_number(s, h.x_start);
+        s += ' ';
+        row_y.append_to(s, -y);
         s += " H ";
         detail::append_number(s, h.x_end);
         if (s.size() > (std::size_t{1} << 16)) {

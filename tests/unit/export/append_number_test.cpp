@@ -62,5 +62,24 @@ TEST(AppendNumber, WritesWhatFmtWritesForRandomDoublesOfEveryMagnitude) {
   }
 }
 
+TEST(RepeatedNumber, WritesWhatAppendNumberWritesWhetherTheNumberRepeatsOrChanges) {
+  // Runs of one value, values that compare equal but print differently (0 and -0), a NaN (which
+  // equals nothing), and a return to a value seen before.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<double> values = {-41.15, -41.15, -41.15, -41.05, 0.0,   -0.0,  -0.0,
+                                      0.0,    nan,    nan,    1e-05,  1e-05, -41.15};
+  RepeatedNumber repeated;
+  std::string written;
+  std::string expected;
+  for (const double v : values) {
+    repeated.append_to(written, v);
+    written += ',';
+    append_number(expected, v);
+    expected += ',';
+  }
+  EXPECT_EQ(written, expected);
+  EXPECT_EQ(written, "-41.15,-41.15,-41.15,-41.05,0,-0,-0,0,nan,nan,1e-05,1e-05,-41.15,");
+}
+
 }  // namespace
 }  // namespace strata::io::detail
