@@ -18,7 +18,9 @@ namespace {
 using PointKey = std::array<std::uint64_t, 3>;
 
 std::uint64_t coordinate_bits(double value) {
-  return std::bit_cast<std::uint64_t>(value == 0.0 ? 0.0 : value);
+  // Only the two zeros have no bit set but the sign: an integer test, without a branch.
+  const auto bits = std::bit_cast<std::uint64_t>(value);
+  return (bits << 1) == 0 ? 0 : bits;
 }
 
 PointKey key_of(const Vec3& p) {
@@ -27,16 +29,17 @@ PointKey key_of(const Vec3& p) {
 
 struct PointKeyHash {
   std::size_t operator()(const PointKey& key) const noexcept {
-    // splitmix64-style mixing of the three words; coordinates of one mesh share high bits.
-    std::uint64_t h = 0x9e3779b97f4a7c15ull;
-    for (const std::uint64_t word : key) {
-      h ^= word + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-      h ^= h >> 30;
-      h *= 0xbf58476d1ce4e5b9ull;
-      h ^= h >> 27;
-      h *= 0x94d049bb133111ebull;
-      h ^= h >> 31;
-    }
+    // Each word multiplied by its own odd constant and turned to its own place, the three
+    // combined and then mixed (the finaliser of MurmurHash3): the low bits of a coordinate read
+    // from a float are all zero, and the table's index is taken from the low bits of the hash.
+    std::uint64_t h = key[0] * 0x9e3779b97f4a7c15ull ^
+                      std::rotl(key[1] * 0xc2b2ae3d27d4eb4full, 21) ^
+                      std::rotl(key[2] * 0x165667b19e3779f9ull, 42);
+    h ^= h >> 33;
+    h *= 0xff51afd7ed558ccdull;
+    h ^= h >> 33;
+    h *= 0xc4ceb9fe1a85ec53ull;
+    h ^= h >> 33;
     return static_cast<std::size_t>(h);
   }
 };
@@ -105,33 +108,44 @@ IndexedMesh weld_vertices(const TriangleSoup& soup) {
   reserve_huge_pages(mesh.vertices, soup.triangles.size() / 2 + 3);
   VertexTable index_of(soup.triangles.size() / 2 + 3);
 
-  // The table is larger than the caches: each corner's slot is fetched a few corners ahead.
+  // The table is larger than the caches: each corner's slot is fetched a few corners ahead,
+  // when its key and hash are computed, and both are kept until the corner's turn.
   constexpr std::size_t kAhead = 16;
-  const std::size_t corners = 3 * soup.triangles.size();
-  const auto corner = [&](std::size_t c) -> const Vec3& { return soup.triangles[c / 3][c % 3]; };
-  std::array<std::size_t, kAhead> hashes{};
-  for (std::size_t c = 0; c < std::min(kAhead, corners); ++c) {
-    hashes[c] = PointKeyHash{}(key_of(corner(c)));
-    index_of.prefetch(hashes[c]);
-  }
-  std::array<VertexIndex, 3> facet{};
-  for (std::size_t c = 0; c < corners; ++c) {
-    const std::size_t hash = hashes[c % kAhead];
-    if (c + kAhead < corners) {
-      const std::size_t later = PointKeyHash{}(key_of(corner(c + kAhead)));
-      hashes[c % kAhead] = later;
-      index_of.prefetch(later);
+  struct Ahead {
+    PointKey key;
+    std::size_t hash;
+  };
+  std::array<Ahead, kAhead> ahead{};
+  const std::size_t facets = soup.triangles.size();
+  const std::size_t corners = 3 * facets;
+  std::size_t ahead_facet = 0;  // the corner kAhead ahead, as (facet, corner)
+  int ahead_corner = 0;
+  const auto fetch_ahead = [&](std::size_t slot) {
+    const PointKey key = key_of(soup.triangles[ahead_facet][ahead_corner]);
+    ahead[slot] = Ahead{key, PointKeyHash{}(key)};
+    index_of.prefetch(ahead[slot].hash);
+    if (++ahead_corner == 3) {
+      ahead_corner = 0;
+      ++ahead_facet;
     }
-    const Vec3& p = corner(c);
-    const auto [vertex, inserted] = index_of.find_or_insert(
-        key_of(p), hash, mesh.vertices, static_cast<VertexIndex>(mesh.vertices.size()));
-    if (inserted) {
-      STRATA_ASSERT(mesh.vertices.size() < std::numeric_limits<VertexIndex>::max(),
-                    "more distinct vertices than VertexIndex can number");
-      mesh.vertices.push_back(p);
+  };
+  for (std::size_t c = 0; c < std::min(kAhead, corners); ++c) fetch_ahead(c);
+  std::size_t c = 0;
+  for (std::size_t f = 0; f < facets; ++f) {
+    std::array<VertexIndex, 3> facet{};
+    for (int k = 0; k < 3; ++k, ++c) {
+      const Ahead here = ahead[c % kAhead];
+      if (c + kAhead < corners) fetch_ahead(c % kAhead);
+      const auto [vertex, inserted] = index_of.find_or_insert(
+          here.key, here.hash, mesh.vertices, static_cast<VertexIndex>(mesh.vertices.size()));
+      if (inserted) {
+        STRATA_ASSERT(mesh.vertices.size() < std::numeric_limits<VertexIndex>::max(),
+                      "more distinct vertices than VertexIndex can number");
+        mesh.vertices.push_back(soup.triangles[f][k]);
+      }
+      facet[k] = vertex;
     }
-    facet[c % 3] = vertex;
-    if (c % 3 == 2) mesh.triangles.push_back(facet);
+    mesh.triangles.push_back(facet);
   }
   return mesh;
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 #include <tuple>
@@ -45,6 +46,20 @@ TEST(WeldVertices, PositiveAndNegativeZeroWeld) {
   }));
   EXPECT_EQ(mesh.vertices.size(), 4u);
   EXPECT_EQ(mesh.triangles[1][0], mesh.triangles[0][0]);
+}
+
+TEST(WeldVertices, OnlyTheTwoZerosAreOnePoint) {
+  // The smallest subnormals, either sign, differ from zero and from each other in one bit beside
+  // the sign: they stay apart, where -0 and +0 weld.
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const auto mesh = weld_vertices(soup_of({
+      {Vec3{0.0, 0.0, 0.0}, {tiny, 0.0, 0.0}, {-tiny, 0.0, 0.0}},
+      {Vec3{-0.0, 0.0, 0.0}, {0.0, -tiny, -0.0}, {0.0, tiny, 0.0}},
+  }));
+  EXPECT_EQ(mesh.vertices.size(), 5u);
+  EXPECT_EQ(mesh.triangles[1][0], mesh.triangles[0][0]);
+  EXPECT_NE(mesh.triangles[0][1], mesh.triangles[0][2]);
+  EXPECT_NE(mesh.triangles[1][1], mesh.triangles[1][2]);
 }
 
 TEST(WeldVertices, NearButUnequalCornersStayDistinct) {
