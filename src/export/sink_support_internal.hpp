@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "export/shortest_number_internal.hpp"
 #include "io/little_endian.hpp"
 #include "strata/core/result.hpp"
 #include "strata/io/output_file.hpp"
@@ -178,11 +179,9 @@ class LayerFilesSink : public LayerSink {
 
 /// Appends a double in the shortest form that reads back to the same bits.
 inline void append_number(std::string& out, double v) {
-  // The format compiled and written to the stack: the same text as fmt::format("{}", v), with
-  // neither the format string parsed nor the string grown a character at a time.
-  char digits[32];  // the longest, "-2.2250738585072014e-308", takes 24
-  char* end = fmt::format_to(digits, FMT_COMPILE("{}"), v);
-  out.append(digits, end);
+  // Written to the stack, then appended: the string is not grown a character at a time.
+  char digits[kShortestNumberChars];
+  out.append(digits, write_shortest(digits, v));
 }
 
 /// A number written many times in a row (a scanline's y, once or twice for each of its row's
@@ -193,13 +192,13 @@ class RepeatedNumber {
     const auto bits = std::bit_cast<std::uint64_t>(v);
     if (length_ == 0 || bits != bits_) {
       bits_ = bits;
-      length_ = static_cast<std::size_t>(fmt::format_to(digits_, FMT_COMPILE("{}"), v) - digits_);
+      length_ = static_cast<std::size_t>(write_shortest(digits_, v) - digits_);
     }
     out.append(digits_, length_);
   }
 
  private:
-  char digits_[32];
+  char digits_[kShortestNumberChars];
   std::size_t length_ = 0;
   std::uint64_t bits_ = 0;
 };

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -59,6 +60,26 @@ TEST(AppendNumber, WritesWhatFmtWritesForRandomDoublesOfEveryMagnitude) {
     for (const double v : {any, coordinate, rounded}) {
       ASSERT_EQ(appended(v), fmt::format("{}", v)) << std::bit_cast<std::uint64_t>(v);
     }
+  }
+}
+
+TEST(AppendNumber, WritesWhatFmtWritesAroundEveryPowerOfTenAndItsLayouts) {
+  // Where the layout changes: every power of ten and its neighbours either side (the switch
+  // between fixed and exponent notation, the number of exponent digits, zeros before and after
+  // the digits), times short and long significands, both signs.
+  for (int e = -324; e <= 308; ++e) {
+    const double p = std::pow(10.0, e);
+    for (const double m : {1.0, 1.5, 9.999999999999998, 1.2345678901234567, 3.0}) {
+      const double v = p * m;
+      for (const double w : {v, std::nextafter(v, 0.0), std::nextafter(v, HUGE_VAL)}) {
+        for (const double x : {w, -w}) ASSERT_EQ(appended(x), fmt::format("{}", x)) << x;
+      }
+    }
+  }
+  for (std::uint64_t n = 1; n < 2'000'000; n = n * 3 + 1) {
+    const auto v = static_cast<double>(n);
+    ASSERT_EQ(appended(v), fmt::format("{}", v));
+    ASSERT_EQ(appended(v / 1024), fmt::format("{}", v / 1024));
   }
 }
 
