@@ -840,8 +840,9 @@ TEST(ReadStlAscii, FileEndingInsideAFacetIsError) {
 TEST(ReadStlAscii, LineLongerThanTheLimitFailsFast) {
   ReadLimits limits;
   limits.max_line_bytes = 64;
-  const auto soup = read_stl_bytes(
-      triangle_with_vertex_line(4, "vertex 0 0 0" + std::string(100, ' ')), "t.stl", limits);
+  std::string long_line = "vertex 0 0 0";
+  long_line.append(100, ' ');
+  const auto soup = read_stl_bytes(triangle_with_vertex_line(4, long_line), "t.stl", limits);
   ASSERT_FALSE(soup);
   EXPECT_EQ(soup.error().location, "t.stl:4");
   EXPECT_TRUE(contains(soup.error().message, "64 bytes")) << soup.error().message;
@@ -1079,7 +1080,9 @@ TEST(ReadStlAscii, OuterWithoutLoopIsAWarningQuotingTheRest) {
 
 TEST(ReadStlAscii, LongOrControlCharacterTextIsQuotedShortAndVisible) {
   std::string text = kTriangle;
-  text.replace(text.find("endloop"), 7, "endloop " + std::string(70, 'y'));
+  std::string long_endloop = "endloop ";
+  long_endloop.append(70, 'y');
+  text.replace(text.find("endloop"), 7, long_endloop);
   text.replace(text.find("endfacet"), 8, "endfacet \x7f\x01z");
   const auto soup = read_stl_bytes(text, "t.stl");
   ASSERT_TRUE(soup) << soup.error().to_string();
