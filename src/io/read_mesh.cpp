@@ -311,8 +311,11 @@ Result<TriangleSoup> read_mesh(const std::filesystem::path& path, const ReadLimi
   std::unique_ptr<char[]> buffer;
   std::string streamed;
   std::string_view bytes;
-  if (S_ISREG(info.st_mode) && info.st_size > 0) {
-    const auto size = static_cast<std::uint64_t>(info.st_size);
+  // A regular file's size, or, for a device, where seeking to its end goes: 0 for /dev/zero
+  // (read as an empty file rather than without end), none for a pipe or a terminal.
+  const off_t end = S_ISREG(info.st_mode) ? info.st_size : ::lseek(file.fd(), 0, SEEK_END);
+  if (end > 0) {
+    const auto size = static_cast<std::uint64_t>(end);
     std::array<char, detail::kStlBinaryHeaderBytes> head_bytes{};
     const std::size_t head_size = std::min<std::uint64_t>(size, head_bytes.size());
     errno = 0;
@@ -339,8 +342,8 @@ Result<TriangleSoup> read_mesh(const std::filesystem::path& path, const ReadLimi
                                                                        : "the file got shorter"));
     }
     bytes = std::string_view(buffer.get(), length);
-  } else if (!S_ISREG(info.st_mode)) {
-    // Not a regular file (a pipe, /dev/stdin): read it as a stream.
+  } else if (end < 0) {
+    // Not seekable (a pipe, a terminal): read it as a stream.
     std::array<char, 65536> chunk{};
     for (;;) {
       const ssize_t got = ::read(file.fd(), chunk.data(), chunk.size());

@@ -216,6 +216,15 @@ TEST(ReadMeshFile, ReadsAMeshFromAPipe) {
   EXPECT_EQ(soup->triangles.size(), 1u);
 }
 
+TEST(ReadMeshFile, ADeviceWithoutEndIsAnEmptyFileNotReadForever) {
+  // Seeking to the end of /dev/zero goes nowhere: it is an empty file, as for /dev/null.
+  for (const char* device : {"/dev/zero", "/dev/null"}) {
+    const auto soup = read_mesh(device);
+    ASSERT_FALSE(soup) << device;
+    EXPECT_EQ(soup.error().message, "empty file (0 bytes)") << device;
+  }
+}
+
 TEST(ReadMeshFile, AnEmptyPipeIsAnEmptyFile) {
   const test::TempDir dir("read-mesh");
   const auto fifo = dir / "model.stl";

@@ -43,7 +43,9 @@ struct Seen {
   std::vector<std::pair<int, int>> calls;
   PairCallback callback() {
     return [this](const LayerResult* a, const LayerResult* b) {
-      if (a && b) EXPECT_EQ(a->cells, b->cells) << "a pair holds the same layer";
+      if (a && b) {
+        EXPECT_EQ(a->cells, b->cells) << "a pair holds the same layer";
+      }
       calls.emplace_back(a ? static_cast<int>(a->layer) : -1, b ? static_cast<int>(b->layer) : -1);
     };
   }
