@@ -1,5 +1,6 @@
 #include "strata/voxel/boundary_shell.hpp"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
@@ -9,7 +10,9 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <memory>
 #include <optional>
+#include <span>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -235,18 +238,24 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
   if (!(thickness_mm_ > 0.0)) return;
   const std::size_t nf = mesh_.triangles.size();
   // These arrays and the copies below are filled once: huge pages spare a fault per 4 KiB.
-  std::vector<double> zmin;
-  std::vector<double> zmax;
-  reserve_huge_pages(zmin, nf);
-  reserve_huge_pages(zmax, nf);
-  zmin.resize(nf);
-  zmax.resize(nf);
+  // Written whole by the threads below: not zeroed on one thread first.
+  const auto zmin = std::make_unique_for_overwrite<double[]>(nf);
+  const auto zmax = std::make_unique_for_overwrite<double[]>(nf);
+  advise_huge_pages(zmin.get(), nf * sizeof(double));
+  advise_huge_pages(zmax.get(), nf * sizeof(double));
   // Patches: the facets whose centroids share a box of kPatchCells cells by kPatchLayers layers,
   // counted from the mesh's lowest corner. A facet's box is the key it is sorted by, beside its
   // index, so the sort reads no other array.
-  std::vector<std::pair<std::uint64_t, FacetIndex>> by_patch;
-  reserve_huge_pages(by_patch, nf);
-  by_patch.resize(nf);
+  // Members without initialisers, unlike std::pair's: the array is not zeroed first.
+  struct PatchKey {
+    std::uint64_t first;
+    FacetIndex second;
+    bool operator<(const PatchKey& o) const {
+      return first != o.first ? first < o.first : second < o.second;
+    }
+  };
+  const auto by_patch = std::make_unique_for_overwrite<PatchKey[]>(nf);
+  advise_huge_pages(by_patch.get(), nf * sizeof(PatchKey));
   const Vec3 low = mesh_.bounds().min;
   const auto box_index = [](double offset, double size) {
     const double q = std::floor(offset / size);
@@ -265,12 +274,13 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
     const double cx = (a.x + b.x + c.x) / 3.0;
     const double cy = (a.y + b.y + c.y) / 3.0;
     const double cz = (a.z + b.z + c.z) / 3.0;
-    by_patch[f] = {box_index(cz - low.z, patch_z) << 42 | box_index(cy - low.y, patch_y) << 21 |
-                       box_index(cx - low.x, patch_x),
-                   static_cast<FacetIndex>(f)};
+    by_patch[f] =
+        PatchKey{box_index(cz - low.z, patch_z) << 42 | box_index(cy - low.y, patch_y) << 21 |
+                     box_index(cx - low.x, patch_x),
+                 static_cast<FacetIndex>(f)};
   });
   // Ties by index, so that the parallel sort gives one order.
-  tbb::parallel_sort(by_patch.begin(), by_patch.end());
+  tbb::parallel_sort(by_patch.get(), by_patch.get() + nf);
   std::vector<Patch> patches;
   for (std::size_t r = 0; r < nf;) {
     Patch patch;
@@ -312,22 +322,41 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
       }
     }
   });
-  std::vector<std::uint8_t> starts_vertex(3 * nf, 0);
+  // Each patch numbers the vertices it uses first, from the count of those in the patches
+  // before it: the patches count theirs, and number them, in parallel.
+  const auto starts_vertex = std::make_unique_for_overwrite<std::uint8_t[]>(3 * nf);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, 3 * nf, 1 << 16), [&](const auto& r) {
+    std::fill(starts_vertex.get() + r.begin(), starts_vertex.get() + r.end(), std::uint8_t{0});
+  });
   tbb::parallel_for(std::size_t{0}, first_use.size(), [&](std::size_t v) {
     const std::uint32_t first = first_use[v].load(std::memory_order_relaxed);
     if (first != kUnused) starts_vertex[first] = 1;
   });
-  std::vector<VertexIndex> renumbered(mesh_.vertices.size(), kUnused);
+  const auto first_uses = [&](const Patch& patch) {
+    return std::span(starts_vertex.get() + 3 * std::size_t{patch.begin},
+                     3 * std::size_t{patch.end - patch.begin});
+  };
+  tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t q) {
+    const auto starts = first_uses(patches[q]);
+    patches[q].vertex_end = static_cast<VertexIndex>(std::count(starts.begin(), starts.end(), 1));
+  });
   VertexIndex next = 0;
   for (Patch& patch : patches) {
     patch.vertex_begin = next;
-    for (std::size_t position = 3 * std::size_t{patch.begin}; position < 3 * std::size_t{patch.end};
-         ++position) {
-      if (starts_vertex[position] != 0)
-        renumbered[triangles_by_patch_[position / 3][position % 3]] = next++;
-    }
+    next += patch.vertex_end;
     patch.vertex_end = next;
   }
+  std::vector<VertexIndex> renumbered(mesh_.vertices.size(), kUnused);
+  tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t q) {
+    const Patch& patch = patches[q];
+    const auto starts = first_uses(patch);
+    VertexIndex number = patch.vertex_begin;
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+      if (starts[k] == 0) continue;
+      const std::size_t position = 3 * std::size_t{patch.begin} + k;
+      renumbered[triangles_by_patch_[position / 3][position % 3]] = number++;
+    }
+  });
   reserve_huge_pages(vertices_by_patch_, next);
   vertices_by_patch_.resize(next);
   tbb::parallel_for(std::size_t{0}, renumbered.size(), [&](std::size_t v) {
