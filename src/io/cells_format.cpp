@@ -67,9 +67,20 @@ std::size_t first_unstorable_cell(std::span<const CellClass> cells) {
     // bit 0.
     constexpr std::uint64_t kHigh = 0xFCFCFCFCFCFCFCFCULL;
     constexpr std::uint64_t kLow = 0x0101010101010101ULL;
+    const auto unstorable_bits = [&](std::size_t at) {
+      const std::uint64_t w = load_double_word(cells.data() + at);
+      return (w & kHigh) | ((w >> 1) & ~w & kLow);
+    };
+    // Blocks of 256 cells without a branch inside, which the compiler takes several words a
+    // step; the block that holds a bad code is searched word by word below.
+    constexpr std::size_t kBlock = 256;
+    for (; idx + kBlock <= cells.size(); idx += kBlock) {
+      std::uint64_t bad = 0;
+      for (std::size_t at = idx; at < idx + kBlock; at += 8) bad |= unstorable_bits(at);
+      if (bad != 0) break;
+    }
     for (; idx + 8 <= cells.size(); idx += 8) {
-      const std::uint64_t w = load_double_word(cells.data() + idx);
-      if ((w & kHigh) != 0 || ((w >> 1) & ~w & kLow) != 0) break;
+      if (unstorable_bits(idx) != 0) break;
     }
   }
   for (; idx < cells.size(); ++idx) {

@@ -197,6 +197,22 @@ TEST(PackedCells, FindTheFirstCodeTheEncodingCannotStoreWherever) {
   }
 }
 
+TEST(PackedCells, FindTheFirstUnstorableCodeInALongLayer) {
+  // Long enough for the blocks of 256 cells: a bad code at the edges of a block, in the middle,
+  // in the tail after the last whole block, and with a later bad code in the same block.
+  const std::size_t n = 2000;
+  for (const std::size_t at :
+       {0UL, 7UL, 8UL, 255UL, 256UL, 257UL, 1000UL, 1791UL, 1792UL, 1999UL}) {
+    for (const unsigned bad : {2U, 0x80U}) {
+      std::vector<CellClass> cells(n, code(1));
+      cells[at] = code(bad);
+      if (at + 3 < n) cells[at + 3] = code(4);
+      ASSERT_EQ(first_unstorable_cell(cells), at) << "code " << bad << " at " << at;
+    }
+  }
+  EXPECT_EQ(first_unstorable_cell(std::vector<CellClass>(n, code(3))), n);
+}
+
 TEST(CellsWriter, ReservedCodeIsAnInternalError) {
   ScratchDir dir;
   auto sink = make_cells_writer(dir / "part.cells");
