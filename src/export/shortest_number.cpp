@@ -1,7 +1,6 @@
 #include <fmt/compile.h>
 #include <fmt/format.h>
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>

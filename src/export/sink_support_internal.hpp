@@ -3,7 +3,6 @@
 // Pieces shared by the layer writers of src/export/: the paths a sink created (so abort() can take
 // them away), the order checks every sink makes, little-endian encoding, number formatting.
 
-#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <bit>

@@ -224,13 +224,19 @@ Result<TriangleSoup> read_any(std::string_view bytes, std::string_view name,
   return soup;
 }
 
-Result<void> check_scale(const CoordinateScale& scale) {
+/// The soup `read` returns, converted to millimetres; a scale factor that is not a finite
+/// number > 0 is refused before anything is read.
+template <class Read>
+Result<TriangleSoup> read_scaled(std::string_view name, const CoordinateScale& scale, Read read) {
   if (!(scale.scale > 0.0) || !std::isfinite(scale.scale)) {
     return Error{ErrorCode::Usage,
                  fmt::format("the scale factor must be a finite number > 0, got {}", scale.scale),
                  {}};
   }
-  return {};
+  Result<TriangleSoup> soup = read();
+  if (!soup) return soup;
+  if (auto scaled = apply_scale(*soup, name, scale); !scaled) return scaled.error();
+  return soup;
 }
 
 /// A file descriptor closed when it goes out of scope.
@@ -245,12 +251,22 @@ class OpenFile {
   }
   int fd() const { return fd_; }
 
+  /// Why the last read_at failed: the system's error, or the file ending first.
+  static Error read_error(std::string_view name) {
+    return bad_input(name, fmt::format("cannot read: {}",
+                                       errno != 0 ? std::strerror(errno) : "the file got shorter"));
+  }
+
   /// Reads `length` bytes at `offset`; false on an error or when the file ends first.
   bool read_at(char* into, std::size_t length, std::uint64_t offset) const {
     while (length > 0) {
       const ssize_t got = ::pread(fd_, into, length, static_cast<off_t>(offset));
       if (got < 0 && errno == EINTR) continue;
-      if (got <= 0) return false;
+      if (got < 0) return false;
+      if (got == 0) {
+        errno = 0;  // the file ended first (read_error)
+        return false;
+      }
       into += got;
       length -= static_cast<std::size_t>(got);
       offset += static_cast<std::uint64_t>(got);
@@ -284,11 +300,7 @@ Result<TriangleSoup> read_binary_stl_file(const OpenFile& file, std::string_view
 
 Result<TriangleSoup> read_mesh_bytes(std::string_view bytes, std::string_view name,
                                      const ReadLimits& limits, const CoordinateScale& scale) {
-  if (auto checked = check_scale(scale); !checked) return checked.error();
-  Result<TriangleSoup> soup = read_any(bytes, name, limits, scale);
-  if (!soup) return soup;
-  if (auto scaled = apply_scale(*soup, name, scale); !scaled) return scaled.error();
-  return soup;
+  return read_scaled(name, scale, [&] { return read_any(bytes, name, limits, scale); });
 }
 
 Result<TriangleSoup> read_mesh(const std::filesystem::path& path, const ReadLimits& limits,
@@ -318,29 +330,18 @@ Result<TriangleSoup> read_mesh(const std::filesystem::path& path, const ReadLimi
     const auto size = static_cast<std::uint64_t>(end);
     std::array<char, detail::kStlBinaryHeaderBytes> head_bytes{};
     const std::size_t head_size = std::min<std::uint64_t>(size, head_bytes.size());
-    errno = 0;
-    if (!file.read_at(head_bytes.data(), head_size, 0)) {
-      return bad_input(name, fmt::format("cannot read: {}", errno != 0 ? std::strerror(errno)
-                                                                       : "the file got shorter"));
-    }
+    if (!file.read_at(head_bytes.data(), head_size, 0)) return file.read_error(name);
     const std::string_view head(head_bytes.data(), head_size);
     if (!detail::is_gzip(head) && reads_as_binary_stl(head, size, name)) {
-      if (auto checked = check_scale(scale); !checked) return checked.error();
-      Result<TriangleSoup> soup = read_binary_stl_file(file, head, size, name, limits);
-      if (!soup) return soup;
-      if (auto scaled = apply_scale(*soup, name, scale); !scaled) return scaled.error();
-      return soup;
+      return read_scaled(name, scale,
+                         [&] { return read_binary_stl_file(file, head, size, name, limits); });
     }
     // Any other file is read whole into storage that is not zeroed first, advised to huge pages
     // when it is large.
     const auto length = static_cast<std::size_t>(size);
     buffer = std::make_unique_for_overwrite<char[]>(length);
     advise_huge_pages(buffer.get(), length);
-    errno = 0;
-    if (!file.read_at(buffer.get(), length, 0)) {
-      return bad_input(name, fmt::format("cannot read: {}", errno != 0 ? std::strerror(errno)
-                                                                       : "the file got shorter"));
-    }
+    if (!file.read_at(buffer.get(), length, 0)) return file.read_error(name);
     bytes = std::string_view(buffer.get(), length);
   } else if (end < 0) {
     // Not seekable (a pipe, a terminal): read it as a stream.

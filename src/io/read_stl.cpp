@@ -56,10 +56,16 @@ float load_float32_le(const char* p) {
   return std::bit_cast<float>(detail::get_u32_le(reinterpret_cast<const unsigned char*>(p)));
 }
 
-/// The records of a binary STL, converted in parallel a block at a time.
-Result<TriangleSoup> read_binary_records(const detail::StlRecordBlocks& blocks, std::uint64_t size,
-                                         std::string_view name, const StlBinaryLayout& layout,
-                                         const ReadLimits& limits) {
+/// Records converted by one task, and read again together for the stored normals' messages.
+constexpr std::uint32_t kRecordsABlock = 16384;
+
+}  // namespace
+
+namespace detail {
+
+Result<TriangleSoup> read_stl_records(const StlRecordBlocks& blocks, std::uint64_t size,
+                                      std::string_view name, const StlBinaryLayout& layout,
+                                      const ReadLimits& limits) {
   const std::uint32_t count = layout.declared_facets;
   if (count == 0) {
     return bad_input(std::string(name), "no facets: the binary STL header declares 0 facets");
@@ -99,40 +105,42 @@ Result<TriangleSoup> read_binary_records(const detail::StlRecordBlocks& blocks, 
   std::atomic<bool> any_bad_normal{false};
   std::atomic<std::uint32_t> first_unread{count};
   tbb::enumerable_thread_specific<std::vector<char>> scratches;
-  tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, count, 16384), [&](const auto& range) {
-    const char* records = blocks(range.begin(), range.end() - range.begin(), scratches.local());
-    if (records == nullptr) {
-      for (std::uint32_t seen = first_unread.load();
-           range.begin() < seen && !first_unread.compare_exchange_weak(seen, range.begin());) {
-      }
-      return;
-    }
-    std::uint32_t bad_corner = count;
-    bool bad_normal = false;
-    for (std::uint32_t f = range.begin(); f < range.end(); ++f) {
-      const std::array<float, 12> v =
-          load(records + std::size_t{f - range.begin()} * kStlBinaryFacetBytes);
-      std::array<Vec3, 3>& triangle = soup.triangles[f];
-      for (int c = 0; c < 3; ++c) {
-        const float* p = v.data() + 3 + 3 * c;
-        if (!finite(p)) bad_corner = std::min(bad_corner, f);
-        // float -> double is exact (SPEC §2).
-        triangle[c] = Vec3{p[0], p[1], p[2]};
-      }
-      if (finite(v.data())) {
-        soup.stored_normals[f] = Vec3{v[0], v[1], v[2]};
-      } else {
-        bad_normal = true;  // the normal is ignored: it stays zero
-      }
-    }
-    for (std::uint32_t seen = first_bad_corner.load();
-         bad_corner < seen && !first_bad_corner.compare_exchange_weak(seen, bad_corner);) {
-    }
-    if (bad_normal) any_bad_normal = true;
-  });
+  tbb::parallel_for(
+      tbb::blocked_range<std::uint32_t>(0, count, kRecordsABlock), [&](const auto& range) {
+        const char* records = blocks(range.begin(), range.end() - range.begin(), scratches.local());
+        if (records == nullptr) {
+          for (std::uint32_t seen = first_unread.load();
+               range.begin() < seen && !first_unread.compare_exchange_weak(seen, range.begin());) {
+          }
+          return;
+        }
+        std::uint32_t bad_corner = count;
+        bool bad_normal = false;
+        for (std::uint32_t f = range.begin(); f < range.end(); ++f) {
+          const std::array<float, 12> v =
+              load(records + std::size_t{f - range.begin()} * kStlBinaryFacetBytes);
+          std::array<Vec3, 3>& triangle = soup.triangles[f];
+          for (int c = 0; c < 3; ++c) {
+            const float* p = v.data() + 3 + 3 * c;
+            if (!finite(p)) bad_corner = std::min(bad_corner, f);
+            // float -> double is exact (SPEC §2).
+            triangle[c] = Vec3{p[0], p[1], p[2]};
+          }
+          if (finite(v.data())) {
+            soup.stored_normals[f] = Vec3{v[0], v[1], v[2]};
+          } else {
+            bad_normal = true;  // the normal is ignored: it stays zero
+          }
+        }
+        for (std::uint32_t seen = first_bad_corner.load();
+             bad_corner < seen && !first_bad_corner.compare_exchange_weak(seen, bad_corner);) {
+        }
+        if (bad_normal) any_bad_normal = true;
+      });
 
   if (const std::uint32_t f = first_unread.load(); f < count) {
-    return unreadable(f, static_cast<std::uint32_t>(std::min<std::uint64_t>(count, f + 16384ull)));
+    return unreadable(f, static_cast<std::uint32_t>(
+                             std::min<std::uint64_t>(count, std::uint64_t{f} + kRecordsABlock)));
   }
   std::vector<char> scratch;
   if (const std::uint32_t f = first_bad_corner.load(); f < count) {
@@ -149,10 +157,9 @@ Result<TriangleSoup> read_binary_records(const detail::StlRecordBlocks& blocks, 
     }
   }
   // Read again a block at a time, only when some normal is not finite: rare.
-  constexpr std::uint32_t kBlock = 16384;
-  for (std::uint64_t block = 0; any_bad_normal && block < count; block += kBlock) {
+  for (std::uint64_t block = 0; any_bad_normal && block < count; block += kRecordsABlock) {
     const auto first = static_cast<std::uint32_t>(block);
-    const std::uint32_t n = std::min(kBlock, count - first);
+    const std::uint32_t n = std::min(kRecordsABlock, count - first);
     const char* records = blocks(first, n, scratch);
     if (records == nullptr) return unreadable(first, first + n);
     for (std::uint32_t f = first; f < first + n; ++f) {
@@ -178,6 +185,10 @@ Result<TriangleSoup> read_binary_records(const detail::StlRecordBlocks& blocks, 
   tally.flush_into(soup.diagnostics);
   return soup;
 }
+
+}  // namespace detail
+
+namespace {
 
 Error binary_size_error(std::string_view bytes, std::string_view name,
                         const StlBinaryLayout& layout, std::string_view ascii_note) {
@@ -534,12 +545,6 @@ StlBinaryLayout stl_binary_layout(std::string_view head, std::uint64_t size) {
   return layout;
 }
 
-Result<TriangleSoup> read_stl_records(const StlRecordBlocks& blocks, std::uint64_t size,
-                                      std::string_view name, const StlBinaryLayout& layout,
-                                      const ReadLimits& limits) {
-  return read_binary_records(blocks, size, name, layout, limits);
-}
-
 bool starts_with_solid(std::string_view bytes) {
   if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
   std::size_t i = 0;
@@ -560,7 +565,7 @@ Result<TriangleSoup> read_stl_bytes(std::string_view bytes, std::string_view nam
     const auto blocks = [bytes](std::uint32_t first, std::uint32_t, std::vector<char>&) {
       return bytes.data() + kStlBinaryHeaderBytes + std::size_t{first} * kStlBinaryFacetBytes;
     };
-    return read_binary_records(blocks, bytes.size(), name, layout, limits);
+    return detail::read_stl_records(blocks, bytes.size(), name, layout, limits);
   }
 
   std::string ascii_note;
