@@ -178,6 +178,14 @@ void first_ring(const std::uint8_t* here, const std::uint8_t* below, const std::
   }
 }
 
+/// Whether p is closer than t to the facet with these corners. Its filter is built on the
+/// first call: the boxes of many facets hold no cell to test.
+bool facet_closer_than(std::optional<detail::TriangleDistanceFilter>& filter,
+                       const Vec3* const* corner, double t, const Vec3& p) {
+  if (!filter) filter.emplace(*corner[0], *corner[1], *corner[2], t);
+  return filter->closer_than(p);
+}
+
 }  // namespace
 
 /// The slab of a patch's facets across their area-weighted mean normal, widened by a margin far
@@ -365,7 +373,12 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
   tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t q) {
     Patch& patch = patches[q];
     for (std::uint32_t r = patch.begin; r < patch.end; ++r) {
-      for (VertexIndex& v : triangles_by_patch_[r]) v = renumbered[v];
+      for (VertexIndex& v : triangles_by_patch_[r]) {
+        v = renumbered[v];
+        const Vec3& p = vertices_by_patch_[v];
+        patch.facet_lo = {std::min(patch.facet_lo.x, p.x), std::min(patch.facet_lo.y, p.y), 0.0};
+        patch.facet_hi = {std::max(patch.facet_hi.x, p.x), std::max(patch.facet_hi.y, p.y), 0.0};
+      }
     }
     for (std::uint32_t v = patch.vertex_begin; v < patch.vertex_end; ++v) {
       const Vec3& p = vertices_by_patch_[v];
@@ -449,11 +462,25 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
                        z, pi0, pi1, pj0, rows, interior, out);
   }
   constexpr double kNarrowFromCells = 8.0;
+  // Every facet's reach lies within the box of the patch's corners widened by t (the margin
+  // only widens it; a facet found outside is tested as before, below).
+  const double reach = t * (1.0 + 1e-6);
   std::vector<FacetReach> small;
   double box[4];
+  Candidates candidates;
   for (std::size_t q = begin; q < end; ++q) {
     const Patch& patch = patches_[q];
     if (patch.zmax < z_lo) continue;
+    // The patch's candidates first: where the vertices and the slab leave none (more than half
+    // of the patches of a layer on a fine mesh), no facet of it is looked at.
+    const auto [ci0, ci1] = x_axis.cells_reaching(patch.facet_lo.x - reach, patch.facet_hi.x + reach);
+    const auto [cj0, cj1] = y_axis.cells_reaching(patch.facet_lo.y - reach, patch.facet_hi.y + reach);
+    if (ci0 > ci1 || cj0 > cj1) continue;
+    bool gathered = ci1 - ci0 < 64 && cj1 - cj0 < kMaxPatchRows;
+    if (gathered) {
+      gather_candidates(ci0, ci1, cj0, cj1 - cj0 + 1, patch.slab, z, out, candidates);
+      if (candidates.none()) continue;
+    }
     small.clear();
     for (std::uint32_t r = patch.begin; r < patch.end; ++r) {
       const auto& tri = triangles_by_patch_[r];
@@ -478,19 +505,24 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
       // to the stretch near the facet pays only on wide facets.
       if ((box[2] - box[0]) * x_axis.inv_d < kNarrowFromCells) {
         small.push_back({{&a, &b, &c}, i0_box, i1_box, j0, j1});
+        gathered = gathered && candidates.hold(small.back());
         continue;
       }
       mark_near_wide_facet(a, b, c, z, box, grow, i0_box, i1_box, j0, j1, out);
+      // The candidates no longer show the cells it marked.
+      gathered = false;
     }
     if (small.empty()) continue;
-    mark_near_small_facets(small, patch.slab, z, out);
+    if (gathered) {
+      test_candidates(small, candidates, z, out);
+    } else {
+      mark_near_small_facets(small, patch.slab, z, out);
+    }
   }
 }
 
 void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, const Slab& slab,
                                            double z, std::vector<CellClass>& out) const {
-  const double t = thickness_mm_;
-  const std::uint32_t nx = grid_.nx;
   std::int64_t pi0 = facets[0].i0, pi1 = facets[0].i1, pj0 = facets[0].j0, pj1 = facets[0].j1;
   for (const FacetReach& m : facets) {
     pi0 = std::min(pi0, m.i0);
@@ -498,23 +530,16 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
     pj0 = std::min(pj0, m.j0);
     pj1 = std::max(pj1, m.j1);
   }
-  const auto test = [&](const FacetReach& facet,
-                        std::optional<detail::TriangleDistanceFilter>& filter, std::int64_t i,
-                        std::int64_t j) {
-    // Built when the facet's box first shows an interior cell: many boxes hold none.
-    if (!filter) filter.emplace(*facet.corner[0], *facet.corner[1], *facet.corner[2], t);
-    return filter->closer_than(
-        Vec3{grid_.xc(static_cast<std::uint32_t>(i)), grid_.yc(static_cast<std::uint32_t>(j)), z});
-  };
-  std::optional<detail::TriangleDistanceFilter> filter;
   if (pi1 - pi0 >= 64) {
     // Wider than a word: each facet over its own box.
+    const std::uint32_t nx = grid_.nx;
+    std::optional<detail::TriangleDistanceFilter> filter;
     for (const FacetReach& facet : facets) {
       filter.reset();
       for (std::int64_t j = facet.j0; j <= facet.j1; ++j) {
         CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
         for (std::int64_t i = facet.i0; i <= facet.i1; ++i) {
-          if (row[i] == CellClass::Interior && test(facet, filter, i, j)) {
+          if (row[i] == CellClass::Interior && facet_closer_than(filter, facet.corner, thickness_mm_, cell_centre(i, j, z))) {
             row[i] = CellClass::Boundary;
           }
         }
@@ -522,10 +547,23 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
     }
     return;
   }
-  // The interior cells of the patch's box, a bit each (bit i - pi0 of row j - pj0): a cell is
-  // read once for the patch, and each facet visits only the interior cells of its box.
-  std::uint64_t interior[kMaxPatchRows];
-  const std::int64_t rows = std::min<std::int64_t>(pj1 - pj0 + 1, kMaxPatchRows);
+  Candidates candidates;
+  gather_candidates(pi0, pi1, pj0, std::min<std::int64_t>(pj1 - pj0 + 1, kMaxPatchRows), slab, z,
+                    out, candidates);
+  test_candidates(facets, candidates, z, out);
+}
+
+void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::int64_t pj0,
+                                      std::int64_t rows, const Slab& slab, double z,
+                                      const std::vector<CellClass>& out,
+                                      Candidates& candidates) const {
+  const double t = thickness_mm_;
+  candidates.pi0 = pi0;
+  candidates.pj0 = pj0;
+  candidates.rows = rows;
+  // The interior cells of the box, a bit each (bit i - pi0 of row j - pj0): a cell is read once
+  // for the patch, and each facet visits only the interior cells of its box.
+  std::uint64_t* interior = candidates.interior;
   gather_interior(out, pi0, pi1, pj0, rows, interior);
   // Cells beyond the slab of the patch's facets, widened by t, are farther than t from each of
   // them: most of the patch's box past the shell, which no facet then tests.
@@ -564,23 +602,36 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
   }
   // The kept rows that still hold an interior cell: a facet visits only those (the vertices
   // leave none in many patches).
-  std::int64_t first_row = 0;
-  std::int64_t last_row = rows - 1;
-  while (first_row < rows && interior[first_row] == 0) ++first_row;
-  while (last_row >= first_row && interior[last_row] == 0) --last_row;
+  candidates.first_row = 0;
+  candidates.last_row = rows - 1;
+  while (candidates.first_row < rows && interior[candidates.first_row] == 0) {
+    ++candidates.first_row;
+  }
+  while (candidates.last_row >= candidates.first_row && interior[candidates.last_row] == 0) {
+    --candidates.last_row;
+  }
+}
+
+void BoundaryShell::test_candidates(std::span<const FacetReach> facets, Candidates& candidates,
+                                    double z, std::vector<CellClass>& out) const {
+  const std::uint32_t nx = grid_.nx;
+  const std::int64_t pi0 = candidates.pi0;
+  const std::int64_t pj0 = candidates.pj0;
+  std::uint64_t* interior = candidates.interior;
   const std::int64_t beyond_words = pj0 + kMaxPatchRows;
+  std::optional<detail::TriangleDistanceFilter> filter;
   for (const FacetReach& facet : facets) {
     filter.reset();
     const std::uint64_t in_box = run_bits(facet.i0, facet.i1, pi0);
-    const std::int64_t j_end = std::min(facet.j1, pj0 + last_row);
-    for (std::int64_t j = std::max(facet.j0, pj0 + first_row); j <= j_end; ++j) {
+    const std::int64_t j_end = std::min(facet.j1, pj0 + candidates.last_row);
+    for (std::int64_t j = std::max(facet.j0, pj0 + candidates.first_row); j <= j_end; ++j) {
       const std::int64_t r = j - pj0;
-      std::uint64_t candidates = interior[r] & in_box;
-      while (candidates != 0) {
-        const int bit = std::countr_zero(candidates);
-        candidates &= candidates - 1;
+      std::uint64_t left = interior[r] & in_box;
+      while (left != 0) {
+        const int bit = std::countr_zero(left);
+        left &= left - 1;
         const std::int64_t i = pi0 + bit;
-        if (test(facet, filter, i, j)) {
+        if (facet_closer_than(filter, facet.corner, thickness_mm_, cell_centre(i, j, z))) {
           out[static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i)] = CellClass::Boundary;
           interior[r] &= ~(std::uint64_t{1} << bit);
         }
@@ -590,7 +641,7 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
     for (std::int64_t j = std::max(facet.j0, beyond_words); j <= facet.j1; ++j) {
       CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
       for (std::int64_t i = facet.i0; i <= facet.i1; ++i) {
-        if (row[i] == CellClass::Interior && test(facet, filter, i, j)) {
+        if (row[i] == CellClass::Interior && facet_closer_than(filter, facet.corner, thickness_mm_, cell_centre(i, j, z))) {
           row[i] = CellClass::Boundary;
         }
       }

@@ -65,9 +65,34 @@ class BoundaryShell {
   };
   static Slab slab_of(std::span<const std::array<VertexIndex, 3>> triangles,
                       const std::vector<Vec3>& vertices);
-  /// The small facets of a patch, tested over the patch's box; `slab` holds the patch's facets.
+  /// The cells of a box of a layer that a patch's facets may still have to mark: its interior
+  /// cells (bit i - pi0 of word j - pj0) within the slab of the patch's facets widened by t.
+  struct Candidates {
+    std::int64_t pi0 = 0, pj0 = 0, rows = 0;
+    std::int64_t first_row = 0, last_row = -1;  ///< the words that hold a bit
+    std::uint64_t interior[kMaxPatchRows];
+    bool none() const { return first_row > last_row; }
+    /// Whether a facet's box of cells lies within the words.
+    bool hold(const FacetReach& facet) const {
+      return facet.i0 >= pi0 && facet.i1 < pi0 + 64 && facet.j0 >= pj0 && facet.j1 < pj0 + rows;
+    }
+  };
+  /// The small facets of a patch, tested over the box they reach together; `slab` holds the
+  /// patch's facets.
   void mark_near_small_facets(std::span<const FacetReach> facets, const Slab& slab, double z,
                               std::vector<CellClass>& out) const;
+  /// The candidates of columns pi0 .. pi1 (at most 64) and `rows` rows from pj0.
+  void gather_candidates(std::int64_t pi0, std::int64_t pi1, std::int64_t pj0, std::int64_t rows,
+                         const Slab& slab, double z, const std::vector<CellClass>& out,
+                         Candidates& candidates) const;
+  /// Tests the facets on the candidates their boxes hold (boxes that `candidates` hold, but for
+  /// rows beyond its words, taken cell by cell), marking those closer than t and clearing their
+  /// bits.
+  void test_candidates(std::span<const FacetReach> facets, Candidates& candidates, double z,
+                       std::vector<CellClass>& out) const;
+  Vec3 cell_centre(std::int64_t i, std::int64_t j, double z) const {
+    return {grid_.xc(static_cast<std::uint32_t>(i)), grid_.yc(static_cast<std::uint32_t>(j)), z};
+  }
   /// The interior cells of rows pj0 .. pj0 + rows - 1, columns pi0 .. pi1 (at most 64), as bits.
   void gather_interior(const std::vector<CellClass>& cells, std::int64_t pi0, std::int64_t pi1,
                        std::int64_t pj0, std::int64_t rows, std::uint64_t* interior) const;
@@ -107,6 +132,11 @@ class BoundaryShell {
                    0.0};
     Vec3 vertex_hi{-std::numeric_limits<double>::infinity(),
                    -std::numeric_limits<double>::infinity(), 0.0};
+    /// The x-y box of all its facets' corners (z unused).
+    Vec3 facet_lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                  0.0};
+    Vec3 facet_hi{-std::numeric_limits<double>::infinity(),
+                  -std::numeric_limits<double>::infinity(), 0.0};
     double zmin = 0.0, zmax = 0.0;
     Slab slab;
   };
