@@ -25,6 +25,8 @@ bool inside(FillRule rule, long long winding, long long count) {
   return rule == FillRule::EvenOdd ? (count & 1) != 0 : winding != 0;
 }
 
+/// Fills the row's solid cells (when `cells` is given) and appends its hatches (when `hatches`
+/// is given).
 void emit_row(FillRule rule, const GridSpec& grid, std::span<RowCrossing> row, std::uint8_t* cells,
               std::vector<HatchSegment>* hatches) {
   long long winding = 0;
@@ -33,20 +35,23 @@ void emit_row(FillRule rule, const GridSpec& grid, std::span<RowCrossing> row, s
     winding += c.weight;
     ++count;
   }
-  // Cells: walk the crossings by the number of cells they lie right of; a cell's winding is the
-  // sum over crossings still to its right.
-  std::sort(row.begin(), row.end(),
-            [](const RowCrossing& a, const RowCrossing& b) { return a.cells_left < b.cells_left; });
   long long w = winding;
   long long n = count;
-  std::uint32_t from = 0;
-  for (const auto& c : row) {
-    if (c.cells_left > from) {
-      if (inside(rule, w, n)) std::fill(cells + from, cells + c.cells_left, std::uint8_t{1});
-      from = c.cells_left;
+  if (cells != nullptr) {
+    // Cells: walk the crossings by the number of cells they lie right of; a cell's winding is
+    // the sum over crossings still to its right.
+    std::sort(row.begin(), row.end(), [](const RowCrossing& a, const RowCrossing& b) {
+      return a.cells_left < b.cells_left;
+    });
+    std::uint32_t from = 0;
+    for (const auto& c : row) {
+      if (c.cells_left > from) {
+        if (inside(rule, w, n)) std::fill(cells + from, cells + c.cells_left, std::uint8_t{1});
+        from = c.cells_left;
+      }
+      w -= c.weight;
+      --n;
     }
-    w -= c.weight;
-    --n;
   }
   if (hatches == nullptr) return;
   // Hatches: the same sweep in continuous x, on the rounded crossing positions.
@@ -71,10 +76,11 @@ void emit_row(FillRule rule, const GridSpec& grid, std::span<RowCrossing> row, s
 }
 
 /// Every crossing of layer `segments` with the rows' scanlines, weighted by sign(nx) of the facet
-/// (or 1 when `unit_weights`), with the number of cells left of it decided exactly.
+/// (or 1 when `unit_weights`), with the number of cells left of it decided exactly when
+/// `want_cells` (0 otherwise).
 std::vector<RowCrossing> collect_crossings(const IndexedMesh& mesh, const LayerSegments& segments,
                                            const GridSpec& grid, bool unit_weights,
-                                           double scan_offset_mm) {
+                                           double scan_offset_mm, bool want_cells) {
   const double z = segments.z_mm;
   const auto row_y = [&](std::uint32_t j) { return grid.yc(j) + scan_offset_mm; };
   const double y_base = grid.y0 + scan_offset_mm;
@@ -115,9 +121,12 @@ std::vector<RowCrossing> collect_crossings(const IndexedMesh& mesh, const LayerS
       double x = below.x;
       if (dy_seg != 0.0) x = below.x + (yr - below.y) * (above.x - below.x) / dy_seg;
       const std::uint32_t cells_left =
-          detail::count_prefix((x - grid.x0) / grid.dx + 0.5, grid.nx, [&](std::uint32_t i) {
-            return detail::scanline_crossing_x_sign(b_lo, b_hi, a_lo, a_hi, z, yr, grid.xc(i)) > 0;
-          });
+          !want_cells ? 0
+                      : detail::count_prefix(
+                            (x - grid.x0) / grid.dx + 0.5, grid.nx, [&](std::uint32_t i) {
+                              return detail::scanline_crossing_x_sign(b_lo, b_hi, a_lo, a_hi, z, yr,
+                                                                      grid.xc(i)) > 0;
+                            });
       crossings.push_back({j, cells_left, weight, x});
     }
   }
@@ -141,18 +150,19 @@ void for_each_row(std::vector<RowCrossing>& crossings, Visit&& visit) {
 
 LayerFill scanline_fill(const IndexedMesh& mesh, const LayerSegments& segments,
                         const GridSpec& grid, FillRule rule, double scan_offset_mm,
-                        bool want_hatches) {
+                        FillWanted wanted) {
   const std::uint64_t fallbacks_before = detail::exact_fallback_counter();
   LayerFill out;
   out.layer = segments.layer;
-  out.solid.assign(grid.cells_per_layer(), 0);
-  std::vector<RowCrossing> crossings =
-      collect_crossings(mesh, segments, grid, rule == FillRule::EvenOdd, scan_offset_mm);
+  if (wanted.cells) out.solid.assign(grid.cells_per_layer(), 0);
+  std::vector<RowCrossing> crossings = collect_crossings(
+      mesh, segments, grid, rule == FillRule::EvenOdd, scan_offset_mm, wanted.cells);
   out.crossings = crossings.size();
 
   for_each_row(crossings, [&](std::uint32_t row, std::span<RowCrossing> in_row) {
-    emit_row(rule, grid, in_row, out.solid.data() + std::size_t{row} * grid.nx,
-             want_hatches ? &out.hatches : nullptr);
+    emit_row(rule, grid, in_row,
+             wanted.cells ? out.solid.data() + std::size_t{row} * grid.nx : nullptr,
+             wanted.hatches ? &out.hatches : nullptr);
   });
   out.exact_fallbacks = detail::exact_fallback_counter() - fallbacks_before;
   return out;
@@ -163,7 +173,7 @@ std::vector<std::int32_t> scanline_winding_numbers(const IndexedMesh& mesh,
                                                    const GridSpec& grid, double scan_offset_mm) {
   std::vector<std::int32_t> winding(grid.cells_per_layer(), 0);
   std::vector<RowCrossing> crossings =
-      collect_crossings(mesh, segments, grid, false, scan_offset_mm);
+      collect_crossings(mesh, segments, grid, false, scan_offset_mm, true);
   for_each_row(crossings, [&](std::uint32_t row, std::span<RowCrossing> in_row) {
     // A crossing adds its weight to the cells left of it: a difference array, then a suffix sum.
     std::int32_t* cells = winding.data() + std::size_t{row} * grid.nx;

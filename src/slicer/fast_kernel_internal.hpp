@@ -19,6 +19,7 @@ class FastKernel final : public LayerKernel {
 
   void prepare_batch(std::uint32_t k0, std::uint32_t k1) override;
   LayerGeometry compute_layer(std::uint32_t k) const override;
+  void skip_cells() override { cells_wanted_ = false; }
   std::string_view name() const override { return "fast path"; }
 
  private:
@@ -34,6 +35,7 @@ class FastKernel final : public LayerKernel {
   FacetBuckets buckets_;
   std::vector<FacetIndex> active_;  ///< facets whose layer range meets the current batch
   std::uint32_t scanned_ = 0;       ///< layers whose buckets the sweep has read
+  bool cells_wanted_ = true;
 };
 
 }  // namespace strata::detail

@@ -246,8 +246,12 @@ const LayerAnalysis& SliceComparison::State::analyse(std::uint32_t k) {
   const FillRule other =
       options.fill_rule == FillRule::EvenOdd ? FillRule::NonZero : FillRule::EvenOdd;
   a.solid_rule =
-      scanline_fill(mesh, a.segments, grid, options.fill_rule, options.scan_offset_mm, false).solid;
-  a.solid_other = scanline_fill(mesh, a.segments, grid, other, options.scan_offset_mm, false).solid;
+      scanline_fill(mesh, a.segments, grid, options.fill_rule, options.scan_offset_mm,
+                    {.cells = true, .hatches = false})
+          .solid;
+  a.solid_other = scanline_fill(mesh, a.segments, grid, other, options.scan_offset_mm,
+                                {.cells = true, .hatches = false})
+                      .solid;
   analysis = std::move(a);
   return *analysis;
 }

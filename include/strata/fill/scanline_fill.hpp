@@ -17,10 +17,17 @@ struct HatchSegment {
   double x_end = 0.0;
 };
 
+/// What scanline_fill computes.
+struct FillWanted {
+  bool cells = true;    ///< LayerFill::solid (empty when false)
+  bool hatches = true;  ///< LayerFill::hatches
+};
+
 /// The solid cells of one layer and its hatches.
 struct LayerFill {
   std::uint32_t layer = 0;
-  /// nx * ny bytes, row-major (index j * nx + i): 1 when the cell centre is inside.
+  /// nx * ny bytes, row-major (index j * nx + i): 1 when the cell centre is inside; empty when
+  /// the cells were not wanted.
   std::vector<std::uint8_t> solid;
   std::vector<HatchSegment> hatches;
   /// Crossings counted in this layer (for the report).
@@ -34,10 +41,11 @@ struct LayerFill {
 /// crossing counts for cell i when its exact x is greater than xc(i), adding sign(nx) of the
 /// facet normal. Every comparison is a sign of a polynomial in the input coordinates, taken by
 /// a double filter with an exact (GMP) fallback, never with a tolerance.
+/// Hatches alone need no cell decided: their crossings' x is all they are made of.
 /// @pre rule is NonZero or EvenOdd; segments come from slice_layer on the same mesh and grid.
 LayerFill scanline_fill(const IndexedMesh& mesh, const LayerSegments& segments,
                         const GridSpec& grid, FillRule rule, double scan_offset_mm,
-                        bool want_hatches);
+                        FillWanted wanted);
 
 /// The integer winding number of every cell centre of the layer (nx * ny, row-major): the sum of
 /// sign(nx) over the crossings right of the centre, by the same exact rule as scanline_fill.

@@ -4,6 +4,8 @@
 
 #include <numeric>
 
+#include "strata/mesh/primitive_models.hpp"
+#include "strata/mesh/weld_vertices.hpp"
 #include "strata/slice/slice_float.hpp"
 #include "support/mesh_builders.hpp"
 
@@ -11,11 +13,12 @@ namespace strata {
 namespace {
 
 LayerFill fill_layer(const IndexedMesh& mesh, const GridSpec& grid, std::uint32_t k,
-                     FillRule rule = FillRule::NonZero, double offset = 0.0) {
+                     FillRule rule = FillRule::NonZero, double offset = 0.0,
+                     FillWanted wanted = {}) {
   std::vector<FacetIndex> all(mesh.triangles.size());
   std::iota(all.begin(), all.end(), FacetIndex{0});
   const LayerSegments segments = slice_layer(mesh, all, grid, k);
-  return scanline_fill(mesh, segments, grid, rule, offset, true);
+  return scanline_fill(mesh, segments, grid, rule, offset, wanted);
 }
 
 GridSpec unit_grid(std::uint32_t n) {
@@ -98,6 +101,47 @@ TEST(ScanlineFill, ScanOffsetMovesTheRowOffAFace) {
   // Shifted up by 0.1 um, row 0's scanline is inside the box and row 2's is above it.
   EXPECT_EQ(fill.solid[0 * 4 + 0], 1);
   EXPECT_EQ(fill.solid[2 * 4 + 0], 0);
+}
+
+TEST(ScanlineFill, HatchesAloneAreTheHatchesOfAFullFillAndDecideNoCell) {
+  // Two overlapping boxes (where the rules differ) and a sphere, whose rows cross many facets at
+  // every slope; each layer filled whole, for its hatches alone and for its cells alone.
+  IndexedMesh two = test::indexed_box_lo_hi_diagonals({0.25, 0.5, 0}, {3, 2.5, 2});
+  test::append_mesh(two, test::indexed_box_lo_hi_diagonals({1.5, 0.25, 0.5}, {4.75, 1.5, 3}));
+  const IndexedMesh sphere = weld_vertices(mesh::make_sphere(2.6, 3));
+  GridSpec centred = unit_grid(6);
+  centred.x0 = centred.y0 = centred.z0 = -3.0;
+  centred.dx = centred.dy = centred.dz = 1.0;
+  struct Case {
+    const IndexedMesh* mesh;
+    GridSpec grid;
+  };
+  for (const Case& c : {Case{&two, unit_grid(5)}, Case{&sphere, centred}}) {
+    for (const FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
+      for (const double offset : {0.0, 0.25}) {
+        for (std::uint32_t k = 0; k < c.grid.nz; ++k) {
+          const LayerFill full = fill_layer(*c.mesh, c.grid, k, rule, offset);
+          const LayerFill hatches =
+              fill_layer(*c.mesh, c.grid, k, rule, offset, {.cells = false, .hatches = true});
+          const LayerFill cells =
+              fill_layer(*c.mesh, c.grid, k, rule, offset, {.cells = true, .hatches = false});
+          EXPECT_TRUE(hatches.solid.empty());
+          EXPECT_TRUE(cells.hatches.empty());
+          EXPECT_EQ(cells.solid, full.solid) << "layer " << k;
+          EXPECT_EQ(hatches.crossings, full.crossings) << "layer " << k;
+          ASSERT_EQ(hatches.hatches.size(), full.hatches.size()) << "layer " << k;
+          for (std::size_t h = 0; h < full.hatches.size(); ++h) {
+            EXPECT_EQ(hatches.hatches[h].row, full.hatches[h].row);
+            EXPECT_EQ(hatches.hatches[h].x_start, full.hatches[h].x_start);
+            EXPECT_EQ(hatches.hatches[h].x_end, full.hatches[h].x_end);
+          }
+        }
+      }
+    }
+  }
+  // The layers above are not all empty: the comparison has hatches and cells to compare.
+  EXPECT_GT(fill_layer(sphere, centred, 3).hatches.size(), 2u);
+  EXPECT_GT(count_solid(fill_layer(two, unit_grid(5), 1, FillRule::EvenOdd)), 4);
 }
 
 }  // namespace
