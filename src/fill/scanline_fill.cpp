@@ -75,6 +75,25 @@ void emit_row(FillRule rule, const GridSpec& grid, std::span<RowCrossing> row, s
   }
 }
 
+/// The crossings ordered by row, by counting them a row (the rows are few, the crossings many).
+/// Within a row they keep their order; what is made of a row does not depend on it (emit_row
+/// sorts them, and ties add up the same in any order).
+std::vector<RowCrossing> by_row(const std::vector<RowCrossing>& crossings) {
+  if (crossings.empty()) return {};
+  std::uint32_t lo = crossings.front().row;
+  std::uint32_t hi = lo;
+  for (const RowCrossing& c : crossings) {
+    lo = std::min(lo, c.row);
+    hi = std::max(hi, c.row);
+  }
+  std::vector<std::uint32_t> start(std::size_t{hi - lo} + 2, 0);
+  for (const RowCrossing& c : crossings) ++start[c.row - lo + 1];
+  for (std::size_t r = 1; r < start.size(); ++r) start[r] += start[r - 1];
+  std::vector<RowCrossing> sorted(crossings.size());
+  for (const RowCrossing& c : crossings) sorted[start[c.row - lo]++] = c;
+  return sorted;
+}
+
 /// Every crossing of layer `segments` with the rows' scanlines, weighted by sign(nx) of the facet
 /// (or 1 when `unit_weights`), with the number of cells left of it decided exactly when
 /// `want_cells` (0 otherwise).
@@ -130,9 +149,7 @@ std::vector<RowCrossing> collect_crossings(const IndexedMesh& mesh, const LayerS
       crossings.push_back({j, cells_left, weight, x});
     }
   }
-  std::sort(crossings.begin(), crossings.end(),
-            [](const RowCrossing& a, const RowCrossing& b) { return a.row < b.row; });
-  return crossings;
+  return by_row(crossings);
 }
 
 /// Calls visit(row, crossings of the row) for every row with crossings, in increasing row order.
