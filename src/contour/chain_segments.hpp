@@ -3,8 +3,9 @@
 // Chaining a layer's segments into loops by mesh topology; shared with the exact path, which
 // chains its exact crossing points the same way.
 
-#include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "strata/slice/layer_segments.hpp"
@@ -21,38 +22,57 @@ inline std::uint64_t crossed_edge_key(const CrossedEdge& e) {
   return (std::uint64_t{e.below} << 32) | e.above;
 }
 
-/// Segments sorted by the key of one of their edges, with a cursor per key so that candidates
-/// are taken in facet order and each only once.
+/// The segments by the key of one of their edges: a hash table of the keys, each with the list
+/// of its segments in segment order, so that candidates are taken in that order and each only
+/// once. Flat and built in one pass (a layer has thousands of segments, nearly every key one).
 class SegmentEdgeIndex {
  public:
   template <class Segment>
-  SegmentEdgeIndex(const std::vector<Segment>& segments, bool by_start) {
-    entries_.reserve(segments.size());
+  SegmentEdgeIndex(const std::vector<Segment>& segments, bool by_start)
+      : next_(segments.size(), kNone) {
+    while ((std::size_t{1} << bits_) < 2 * segments.size()) ++bits_;
+    slots_.assign(std::size_t{1} << bits_, Slot{0, kNone, kNone});
     for (std::uint32_t s = 0; s < segments.size(); ++s) {
-      entries_.push_back(
-          {crossed_edge_key(by_start ? segments[s].start_edge : segments[s].end_edge), s});
+      const std::uint64_t key =
+          crossed_edge_key(by_start ? segments[s].start_edge : segments[s].end_edge);
+      Slot& slot = slots_[probe(key)];
+      if (slot.first == kNone) {
+        slot = Slot{key, s, s};
+      } else {
+        next_[slot.last] = s;
+        slot.last = s;
+      }
     }
-    std::sort(entries_.begin(), entries_.end());
   }
 
   /// The first segment with this key that `used` does not mark, or -1.
   std::int64_t take(std::uint64_t key, const std::vector<bool>& used) const {
-    auto it = std::lower_bound(entries_.begin(), entries_.end(), Entry{key, 0});
-    for (; it != entries_.end() && it->key == key; ++it) {
-      if (!used[it->segment]) return it->segment;
+    for (std::uint32_t s = slots_[probe(key)].first; s != kNone; s = next_[s]) {
+      if (!used[s]) return s;
     }
     return -1;
   }
 
  private:
-  struct Entry {
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+  struct Slot {
     std::uint64_t key;
-    std::uint32_t segment;
-    friend bool operator<(const Entry& a, const Entry& b) {
-      return a.key != b.key ? a.key < b.key : a.segment < b.segment;
-    }
+    std::uint32_t first, last;  ///< the key's first and last segment; kNone: an empty slot
   };
-  std::vector<Entry> entries_;
+
+  /// Where `key` is, or the empty slot where it would go (linear probing; the table is at most
+  /// half full).
+  std::size_t probe(std::uint64_t key) const {
+    const std::size_t mask = slots_.size() - 1;
+    // Fibonacci hashing: the top bits of the product mix both vertex indices of the key.
+    for (std::size_t i = (key * 0x9e3779b97f4a7c15ull) >> (64 - bits_);; i = (i + 1) & mask) {
+      if (slots_[i].first == kNone || slots_[i].key == key) return i;
+    }
+  }
+
+  int bits_ = 4;
+  std::vector<Slot> slots_;
+  std::vector<std::uint32_t> next_;  ///< the segment after each with the same key, or kNone
 };
 
 /// Joins a layer's segments into chains by topology: a segment that ends on mesh edge E is
@@ -60,7 +80,7 @@ class SegmentEdgeIndex {
 /// input) they are taken in segment order. A chain that does not close is extended backwards from
 /// its first segment as far as it goes. Every segment is in exactly one chain. The fast path
 /// (LayerSegment) and the exact path (its exact segments) chain the same facets identically.
-/// Complexity: O(s log s).
+/// Complexity: O(s) expected.
 template <class Segment>
 std::vector<SegmentChain> chain_segments(const std::vector<Segment>& segments) {
   const SegmentEdgeIndex by_start(segments, true);
