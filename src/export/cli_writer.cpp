@@ -94,9 +94,7 @@ class CliWriter final : public detail::SingleFileSink {
       for (std::size_t p = 0; p < n; ++p) {
         const Point2& pt = loop.points[p % loop.points.size()];
         s += ',';
-        detail::append_number(s, pt.x);
-        s += ',';
-        detail::append_number(s, pt.y);
+        detail::append_number_pair(s, pt.x, ',', pt.y);
         flush_if_large(out, s);
       }
       s += '\n';

@@ -16,8 +16,9 @@ constexpr char kDigitPairs[] =
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
-/// Writes the decimal digits of `n` ending just before `end`; returns where they begin.
-char* write_digits_backwards(char* end, std::uint64_t n) {
+/// Writes the decimal digits of `n` < 100,000,000 ending just before `end`; returns where they
+/// begin. On 32 bits, two digits a step.
+char* write_digits_backwards(char* end, std::uint32_t n) {
   while (n >= 100) {
     end -= 2;
     std::memcpy(end, kDigitPairs + 2 * (n % 100), 2);
@@ -32,6 +33,33 @@ char* write_digits_backwards(char* end, std::uint64_t n) {
   return end;
 }
 
+/// The same for any `n` below 10^17 (a double's shortest significand): its last eight digits
+/// apart, so that the work stays on 32 bits.
+char* write_digits_backwards(char* end, std::uint64_t n) {
+  constexpr std::uint64_t kEightDigits = 100'000'000;
+  if (n < kEightDigits) return write_digits_backwards(end, static_cast<std::uint32_t>(n));
+  auto low = static_cast<std::uint32_t>(n % kEightDigits);
+  for (int pair = 0; pair < 4; ++pair) {
+    end -= 2;
+    std::memcpy(end, kDigitPairs + 2 * (low % 100), 2);
+    low /= 100;
+  }
+  n /= kEightDigits;
+  if (n < kEightDigits) return write_digits_backwards(end, static_cast<std::uint32_t>(n));
+  low = static_cast<std::uint32_t>(n % kEightDigits);
+  for (int pair = 0; pair < 4; ++pair) {
+    end -= 2;
+    std::memcpy(end, kDigitPairs + 2 * (low % 100), 2);
+    low /= 100;
+  }
+  return write_digits_backwards(end, static_cast<std::uint32_t>(n / kEightDigits));
+}
+
+/// Copies kCopyBytes, a constant that the compiler turns into a few moves where a copy of the
+/// exact length calls memcpy: what is copied past the text is overwritten or left past its end.
+constexpr std::size_t kCopyBytes = 24;
+void copy_ahead(char* to, const char* from) { std::memcpy(to, from, kCopyBytes); }
+
 }  // namespace
 
 char* write_shortest(char* out, double v) {
@@ -45,51 +73,47 @@ char* write_shortest(char* out, double v) {
   // fmt::format("{}") lays them out: fixed notation for decimal exponents -4 to 15, else
   // d.ddde±XX with at least two exponent digits.
   const auto decimal = fmt::detail::dragonbox::to_decimal(std::fabs(v));
-  char digits[20];
-  char* const digits_end = digits + sizeof digits;
-  const char* first = write_digits_backwards(digits_end, decimal.significand);
-  const auto count = static_cast<int>(digits_end - first);
+  // The digits end at kDigitsEnd and zeros follow them, so that a copy ahead from any digit
+  // stays in the array, and one of an integer's digits brings its trailing zeros along.
+  constexpr std::size_t kDigitsEnd = 20;
+  char digits[kDigitsEnd + kCopyBytes + 4];
+  std::memset(digits + kDigitsEnd, '0', sizeof digits - kDigitsEnd);
+  const char* first = write_digits_backwards(digits + kDigitsEnd, decimal.significand);
+  const auto count = static_cast<int>(digits + kDigitsEnd - first);
   const int exponent = decimal.exponent;
   const int output_exponent = exponent + count - 1;
   if (output_exponent < -4 || output_exponent >= 16) {
     *out++ = first[0];
     if (count > 1) {
       *out++ = '.';
-      std::memcpy(out, first + 1, static_cast<std::size_t>(count - 1));
+      copy_ahead(out, first + 1);
       out += count - 1;
     }
     *out++ = 'e';
     *out++ = output_exponent < 0 ? '-' : '+';
-    const auto magnitude = static_cast<std::uint64_t>(std::abs(output_exponent));
-    if (magnitude < 10) *out++ = '0';
-    char exponent_digits[4];
-    const char* e = write_digits_backwards(exponent_digits + 4, magnitude);
-    const auto length = static_cast<std::size_t>(exponent_digits + 4 - e);
-    std::memcpy(out, e, length);
-    return out + length;
+    const int magnitude = std::abs(output_exponent);  // 5 to 324
+    if (magnitude >= 100) *out++ = static_cast<char>('0' + magnitude / 100);
+    std::memcpy(out, kDigitPairs + 2 * (magnitude % 100), 2);
+    return out + 2;
   }
   if (exponent >= 0) {
-    // 1234e2 -> 123400
-    std::memcpy(out, first, static_cast<std::size_t>(count));
-    out += count;
-    std::memset(out, '0', static_cast<std::size_t>(exponent));
-    return out + exponent;
+    // 1234e2 -> 123400 (16 digits at most: the zeros follow the digits)
+    copy_ahead(out, first);
+    return out + count + exponent;
   }
   const int integer_digits = count + exponent;
   if (integer_digits > 0) {
     // 1234e-2 -> 12.34
-    std::memcpy(out, first, static_cast<std::size_t>(integer_digits));
+    copy_ahead(out, first);
     out += integer_digits;
     *out++ = '.';
-    std::memcpy(out, first + integer_digits, static_cast<std::size_t>(-exponent));
+    copy_ahead(out, first + integer_digits);
     return out - exponent;
   }
-  // 1234e-6 -> 0.001234
-  *out++ = '0';
-  *out++ = '.';
-  std::memset(out, '0', static_cast<std::size_t>(-integer_digits));
-  out -= integer_digits;
-  std::memcpy(out, first, static_cast<std::size_t>(count));
+  // 1234e-6 -> 0.001234 (three zeros after the point at most)
+  std::memcpy(out, "0.000", 5);
+  out += 2 - integer_digits;
+  copy_ahead(out, first);
   return out + count;
 }
 

@@ -2,8 +2,9 @@
 
 namespace strata::io::detail {
 
-/// The longest text write_shortest writes, "-2.2250738585072014e-308", and room to spare.
-inline constexpr int kShortestNumberChars = 32;
+/// The room write_shortest needs: the longest text it writes, "-2.2250738585072014e-308" (24
+/// characters), and as many again, which it may write past the text's end.
+inline constexpr int kShortestNumberChars = 48;
 
 /// Writes a double in the shortest form that reads back to the same bits, exactly the text of
 /// fmt::format("{}", v) (the number grammar of every text strata writes); returns the end.

@@ -183,6 +183,16 @@ inline void append_number(std::string& out, double v) {
   out.append(digits, write_shortest(digits, v));
 }
 
+/// Appends `a`, the character `between` and `b` (a point's coordinates), each number as
+/// append_number writes it, in one append rather than three.
+inline void append_number_pair(std::string& out, double a, char between, double b) {
+  char text[2 * kShortestNumberChars + 1];
+  char* end = write_shortest(text, a);
+  *end++ = between;
+  end = write_shortest(end, b);
+  out.append(text, end);
+}
+
 /// A number written many times in a row (a scanline's y, once or twice for each of its row's
 /// hatches), formatted once for as long as it stays the same: the same text as append_number.
 class RepeatedNumber {

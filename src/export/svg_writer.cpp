@@ -58,9 +58,7 @@ std::string xml_escape(std::string_view text) {
 
 /// Appends "x y" of a layer point in SVG coordinates (y flipped so that +y is up).
 void append_point(std::string& out, double x, double y) {
-  detail::append_number(out, x);
-  out.push_back(' ');
-  detail::append_number(out, -y);
+  detail::append_number_pair(out, x, ' ', -y);
 }
 
 class SvgWriter final : public detail::LayerFilesSink {

@@ -10,6 +10,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "export/sink_support_internal.hpp"
@@ -80,6 +81,33 @@ TEST(AppendNumber, WritesWhatFmtWritesAroundEveryPowerOfTenAndItsLayouts) {
     const auto v = static_cast<double>(n);
     ASSERT_EQ(appended(v), fmt::format("{}", v));
     ASSERT_EQ(appended(v / 1024), fmt::format("{}", v / 1024));
+  }
+}
+
+TEST(AppendNumberPair, WritesBothNumbersAsAppendNumberDoesWithTheCharacterBetween) {
+  // The longest texts first (their digits are copied in fixed-size pieces past their ends, which
+  // must stay in the buffers), then random pairs of every magnitude.
+  const std::vector<double> longest = {-2.2250738585072014e-308, -1.2345678901234567e-100,
+                                       -0.00012345678901234567, -1234567890123456.8,
+                                       -9007199254740991.0, 5e-324};
+  std::mt19937_64 random(20261127);
+  std::vector<std::pair<double, double>> pairs;
+  for (const double a : longest) {
+    for (const double b : longest) pairs.emplace_back(a, b);
+  }
+  for (int i = 0; i < 20000; ++i) {
+    pairs.emplace_back(std::bit_cast<double>(random()), std::bit_cast<double>(random()));
+  }
+  for (const auto& [a, b] : pairs) {
+    for (const char between : {',', ' '}) {
+      std::string out = "x";  // appends, never replaces
+      append_number_pair(out, a, between, b);
+      std::string expected = "x";
+      append_number(expected, a);
+      expected += between;
+      append_number(expected, b);
+      ASSERT_EQ(out, expected) << a << " " << b;
+    }
   }
 }
 
