@@ -139,13 +139,13 @@ std::vector<RowCrossing> collect_crossings(const IndexedMesh& mesh, const LayerS
       const double yr = row_y(j);
       double x = below.x;
       if (dy_seg != 0.0) x = below.x + (yr - below.y) * (above.x - below.x) / dy_seg;
+      // Cell i is left of the crossing when its centre is.
+      const auto centre_left = [&](std::uint32_t i) {
+        return detail::scanline_crossing_x_sign(b_lo, b_hi, a_lo, a_hi, z, yr, grid.xc(i)) > 0;
+      };
       const std::uint32_t cells_left =
-          !want_cells ? 0
-                      : detail::count_prefix(
-                            (x - grid.x0) / grid.dx + 0.5, grid.nx, [&](std::uint32_t i) {
-                              return detail::scanline_crossing_x_sign(b_lo, b_hi, a_lo, a_hi, z, yr,
-                                                                      grid.xc(i)) > 0;
-                            });
+          want_cells ? detail::count_prefix((x - grid.x0) / grid.dx + 0.5, grid.nx, centre_left)
+                     : 0;
       crossings.push_back({j, cells_left, weight, x});
     }
   }

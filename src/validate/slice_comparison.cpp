@@ -245,10 +245,9 @@ const LayerAnalysis& SliceComparison::State::analyse(std::uint32_t k) {
   a.segments = slice_layer(mesh, candidates, grid, k);
   const FillRule other =
       options.fill_rule == FillRule::EvenOdd ? FillRule::NonZero : FillRule::EvenOdd;
-  a.solid_rule =
-      scanline_fill(mesh, a.segments, grid, options.fill_rule, options.scan_offset_mm,
-                    {.cells = true, .hatches = false})
-          .solid;
+  a.solid_rule = scanline_fill(mesh, a.segments, grid, options.fill_rule, options.scan_offset_mm,
+                               {.cells = true, .hatches = false})
+                     .solid;
   a.solid_other = scanline_fill(mesh, a.segments, grid, other, options.scan_offset_mm,
                                 {.cells = true, .hatches = false})
                       .solid;

@@ -473,8 +473,10 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
     if (patch.zmax < z_lo) continue;
     // The patch's candidates first: where the vertices and the slab leave none (more than half
     // of the patches of a layer on a fine mesh), no facet of it is looked at.
-    const auto [ci0, ci1] = x_axis.cells_reaching(patch.facet_lo.x - reach, patch.facet_hi.x + reach);
-    const auto [cj0, cj1] = y_axis.cells_reaching(patch.facet_lo.y - reach, patch.facet_hi.y + reach);
+    const auto [ci0, ci1] =
+        x_axis.cells_reaching(patch.facet_lo.x - reach, patch.facet_hi.x + reach);
+    const auto [cj0, cj1] =
+        y_axis.cells_reaching(patch.facet_lo.y - reach, patch.facet_hi.y + reach);
     if (ci0 > ci1 || cj0 > cj1) continue;
     bool gathered = ci1 - ci0 < 64 && cj1 - cj0 < kMaxPatchRows;
     if (gathered) {
@@ -539,7 +541,8 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
       for (std::int64_t j = facet.j0; j <= facet.j1; ++j) {
         CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
         for (std::int64_t i = facet.i0; i <= facet.i1; ++i) {
-          if (row[i] == CellClass::Interior && facet_closer_than(filter, facet.corner, thickness_mm_, cell_centre(i, j, z))) {
+          if (row[i] == CellClass::Interior &&
+              facet_closer_than(filter, facet.corner, thickness_mm_, cell_centre(i, j, z))) {
             row[i] = CellClass::Boundary;
           }
         }
@@ -641,7 +644,8 @@ void BoundaryShell::test_candidates(std::span<const FacetReach> facets, Candidat
     for (std::int64_t j = std::max(facet.j0, beyond_words); j <= facet.j1; ++j) {
       CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
       for (std::int64_t i = facet.i0; i <= facet.i1; ++i) {
-        if (row[i] == CellClass::Interior && facet_closer_than(filter, facet.corner, thickness_mm_, cell_centre(i, j, z))) {
+        if (row[i] == CellClass::Interior &&
+            facet_closer_than(filter, facet.corner, thickness_mm_, cell_centre(i, j, z))) {
           row[i] = CellClass::Boundary;
         }
       }

@@ -74,8 +74,8 @@ TEST(ChainSegments, ClosedRingsOpenChainsAndSharedEdgesAsTheDefinitionSays) {
   // A ring of four, an open chain whose seed is in its middle, and an edge three segments start
   // on (a non-manifold fan): the first unused in segment order is taken each time.
   const std::vector<LayerSegment> segments = {
-      segment(20, 21, 22, 23), segment(0, 1, 2, 3),    segment(4, 5, 6, 7),
-      segment(6, 7, 0, 1),     segment(2, 3, 4, 5),    segment(10, 11, 20, 21),
+      segment(20, 21, 22, 23), segment(0, 1, 2, 3),     segment(4, 5, 6, 7),
+      segment(6, 7, 0, 1),     segment(2, 3, 4, 5),     segment(10, 11, 20, 21),
       segment(22, 23, 30, 31), segment(30, 31, 40, 41), segment(30, 31, 42, 43),
       segment(30, 31, 44, 45), segment(42, 43, 30, 31),
   };

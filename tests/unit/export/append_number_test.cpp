@@ -88,8 +88,8 @@ TEST(AppendNumberPair, WritesBothNumbersAsAppendNumberDoesWithTheCharacterBetwee
   // The longest texts first (their digits are copied in fixed-size pieces past their ends, which
   // must stay in the buffers), then random pairs of every magnitude.
   const std::vector<double> longest = {-2.2250738585072014e-308, -1.2345678901234567e-100,
-                                       -0.00012345678901234567, -1234567890123456.8,
-                                       -9007199254740991.0, 5e-324};
+                                       -0.00012345678901234567,  -1234567890123456.8,
+                                       -9007199254740991.0,      5e-324};
   std::mt19937_64 random(20261127);
   std::vector<std::pair<double, double>> pairs;
   for (const double a : longest) {
