@@ -19,7 +19,7 @@ class FastKernel final : public LayerKernel {
 
   void prepare_batch(std::uint32_t k0, std::uint32_t k1) override;
   LayerGeometry compute_layer(std::uint32_t k) const override;
-  void skip_cells() override { cells_wanted_ = false; }
+  void want_cells(bool wanted) override { cells_wanted_ = wanted; }
   std::string_view name() const override { return "fast path"; }
 
  private:

@@ -27,9 +27,10 @@ class LayerKernel {
   virtual void prepare_batch(std::uint32_t k0, std::uint32_t k1) = 0;
   /// Contours, segments and the solid bitmap of layer k of the prepared batch; thread-safe.
   virtual LayerGeometry compute_layer(std::uint32_t k) const = 0;
-  /// Says that no cell is wanted (the outputs hold contours and hatches only), before the first
-  /// batch: a kernel may then leave LayerGeometry::fill.solid empty and skip deciding cells.
-  virtual void skip_cells() {}
+  /// Says, before the first batch of a run, whether its cells are wanted: when not (the outputs
+  /// hold contours and hatches only) a kernel may leave LayerGeometry::fill.solid empty and skip
+  /// deciding cells.
+  virtual void want_cells(bool /*wanted*/) {}
   /// How failure messages name the kernel: "fast path", "exact path".
   virtual std::string_view name() const { return "layer kernel"; }
 };
