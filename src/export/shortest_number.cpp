@@ -33,26 +33,26 @@ char* write_digits_backwards(char* end, std::uint32_t n) {
   return end;
 }
 
-/// The same for any `n` below 10^17 (a double's shortest significand): its last eight digits
-/// apart, so that the work stays on 32 bits.
+/// Writes the eight digits of `n` < 100,000,000, leading zeros included, ending just before
+/// `end`; returns where they begin.
+char* write_eight_digits(char* end, std::uint32_t n) {
+  for (int pair = 0; pair < 4; ++pair) {
+    end -= 2;
+    std::memcpy(end, kDigitPairs + 2 * (n % 100), 2);
+    n /= 100;
+  }
+  return end;
+}
+
+/// The same for any `n` (a double's shortest significand is below 10^17): eight digits at a time
+/// split off, so that the pairs are made on 32 bits.
 char* write_digits_backwards(char* end, std::uint64_t n) {
   constexpr std::uint64_t kEightDigits = 100'000'000;
-  if (n < kEightDigits) return write_digits_backwards(end, static_cast<std::uint32_t>(n));
-  auto low = static_cast<std::uint32_t>(n % kEightDigits);
-  for (int pair = 0; pair < 4; ++pair) {
-    end -= 2;
-    std::memcpy(end, kDigitPairs + 2 * (low % 100), 2);
-    low /= 100;
+  while (n >= kEightDigits) {
+    end = write_eight_digits(end, static_cast<std::uint32_t>(n % kEightDigits));
+    n /= kEightDigits;
   }
-  n /= kEightDigits;
-  if (n < kEightDigits) return write_digits_backwards(end, static_cast<std::uint32_t>(n));
-  low = static_cast<std::uint32_t>(n % kEightDigits);
-  for (int pair = 0; pair < 4; ++pair) {
-    end -= 2;
-    std::memcpy(end, kDigitPairs + 2 * (low % 100), 2);
-    low /= 100;
-  }
-  return write_digits_backwards(end, static_cast<std::uint32_t>(n / kEightDigits));
+  return write_digits_backwards(end, static_cast<std::uint32_t>(n));
 }
 
 /// Copies kCopyBytes, a constant that the compiler turns into a few moves where a copy of the
