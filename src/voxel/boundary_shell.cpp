@@ -534,19 +534,10 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
   }
   if (pi1 - pi0 >= 64) {
     // Wider than a word: each facet over its own box.
-    const std::uint32_t nx = grid_.nx;
     std::optional<detail::TriangleDistanceFilter> filter;
     for (const FacetReach& facet : facets) {
       filter.reset();
-      for (std::int64_t j = facet.j0; j <= facet.j1; ++j) {
-        CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
-        for (std::int64_t i = facet.i0; i <= facet.i1; ++i) {
-          if (row[i] == CellClass::Interior &&
-              facet_closer_than(filter, facet.corner, thickness_mm_, cell_centre(i, j, z))) {
-            row[i] = CellClass::Boundary;
-          }
-        }
-      }
+      mark_cell_by_cell(facet, facet.j0, z, filter, out);
     }
     return;
   }
@@ -641,13 +632,19 @@ void BoundaryShell::test_candidates(std::span<const FacetReach> facets, Candidat
       }
     }
     // A patch taller than the words kept: the rows beyond, cell by cell.
-    for (std::int64_t j = std::max(facet.j0, beyond_words); j <= facet.j1; ++j) {
-      CellClass* row = out.data() + static_cast<std::size_t>(j) * nx;
-      for (std::int64_t i = facet.i0; i <= facet.i1; ++i) {
-        if (row[i] == CellClass::Interior &&
-            facet_closer_than(filter, facet.corner, thickness_mm_, cell_centre(i, j, z))) {
-          row[i] = CellClass::Boundary;
-        }
+    mark_cell_by_cell(facet, std::max(facet.j0, beyond_words), z, filter, out);
+  }
+}
+
+void BoundaryShell::mark_cell_by_cell(const FacetReach& facet, std::int64_t j_begin, double z,
+                                      std::optional<detail::TriangleDistanceFilter>& filter,
+                                      std::vector<CellClass>& out) const {
+  for (std::int64_t j = j_begin; j <= facet.j1; ++j) {
+    CellClass* row = out.data() + static_cast<std::size_t>(j) * grid_.nx;
+    for (std::int64_t i = facet.i0; i <= facet.i1; ++i) {
+      if (row[i] == CellClass::Interior &&
+          facet_closer_than(filter, facet.corner, thickness_mm_, cell_centre(i, j, z))) {
+        row[i] = CellClass::Boundary;
       }
     }
   }

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -13,6 +14,10 @@
 #include "strata/voxel/cell_class.hpp"
 
 namespace strata {
+
+namespace detail {
+class TriangleDistanceFilter;
+}
 
 /// Returns the solid bitmap (nx * ny bytes) of layer k, or nullptr when k lies outside the grid
 /// (outside counts as empty). Layers within reach_layers() of the one being classified must be
@@ -90,6 +95,11 @@ class BoundaryShell {
   /// bits.
   void test_candidates(std::span<const FacetReach> facets, Candidates& candidates, double z,
                        std::vector<CellClass>& out) const;
+  /// Tests a facet on the interior cells of rows j_begin .. facet.j1 of its box one by one, and
+  /// marks those closer than t; `filter` is the facet's, built on the first test.
+  void mark_cell_by_cell(const FacetReach& facet, std::int64_t j_begin, double z,
+                         std::optional<detail::TriangleDistanceFilter>& filter,
+                         std::vector<CellClass>& out) const;
   Vec3 cell_centre(std::int64_t i, std::int64_t j, double z) const {
     return {grid_.xc(static_cast<std::uint32_t>(i)), grid_.yc(static_cast<std::uint32_t>(j)), z};
   }
