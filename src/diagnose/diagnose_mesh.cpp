@@ -637,11 +637,10 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
 
     // ---- volumes and shell judgement
     {
-      // Zero-area facets add exactly zero volume; they are summed in an extra group.
-      std::vector<std::uint32_t> group_of_facet = shell_of_facet;
-      for (auto& g : group_of_facet) g = g == kNone ? static_cast<std::uint32_t>(shells.size()) : g;
+      // Zero-area facets, in no shell, add exactly zero volume: they are left out.
+      static_assert(kNone == detail::kNoGroup);
       const detail::ExactVolumes volumes =
-          detail::exact_signed_volumes(mesh, group_of_facet, shells.size() + 1);
+          detail::exact_signed_volumes(mesh, shell_of_facet, shells.size());
       report.volume_mm3 = volumes.total_mm3;
       std::vector<Bbox3> shell_bounds(shells.size());
       for (std::size_t f = 0; f < nf; ++f) {

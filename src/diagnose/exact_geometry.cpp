@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/double_parts.hpp"
@@ -121,10 +122,11 @@ std::vector<mpz_class> sum_determinants(const IndexedMesh& mesh, int min_exponen
     // A run of facets of one group is summed apart, and added to the group's sum when it ends:
     // a group's sum stays N limbs, however many groups (a soup of loose facets makes a million).
     ShiftedProductSum<N> run;
-    std::uint32_t run_group = group_of_facet[begin];
+    std::uint32_t run_group = kNoGroup;  // the run is empty until a facet in a group comes
     for (std::size_t f = begin; f < end; ++f) {
+      if (group_of_facet[f] == kNoGroup) continue;
       if (group_of_facet[f] != run_group) {
-        add_to(sums[run_group], run.total());
+        if (run_group != kNoGroup) add_to(sums[run_group], run.total());
         run = {};
         run_group = group_of_facet[f];
       }
@@ -145,7 +147,7 @@ std::vector<mpz_class> sum_determinants(const IndexedMesh& mesh, int min_exponen
       add_term(a[2], b[0], c[1], false);
       add_term(a[2], b[1], c[0], true);
     }
-    add_to(sums[run_group], run.total());
+    if (run_group != kNoGroup) add_to(sums[run_group], run.total());
   });
   std::vector<mpz_class> out(num_groups);
   for (std::size_t g = 0; g < num_groups; ++g) {
@@ -182,6 +184,7 @@ std::vector<mpz_class> sum_determinants_gmp(const IndexedMesh& mesh, int min_exp
     std::vector<mpz_class>& sums = part_sums[part];
     mpz_class minor, det;
     for (std::size_t f = nf * part / parts; f < nf * (part + 1) / parts; ++f) {
+      if (group_of_facet[f] == kNoGroup) continue;
       const auto& t = mesh.triangles[f];
       const mpz_class* a = &coord[3 * static_cast<std::size_t>(t[0])];
       const mpz_class* b = &coord[3 * static_cast<std::size_t>(t[1])];
@@ -206,6 +209,176 @@ std::vector<mpz_class> sum_determinants_gmp(const IndexedMesh& mesh, int min_exp
   return std::move(sums);
 }
 
+// ---- The floating-point filter
+//
+// A facet's determinant a · (b x c) is evaluated as a double-double (hi + lo) from exact
+// products (fused multiply-add gives a product's rounding error exactly), and the determinants
+// are summed as a double-double. A bound on the error comes with it, so that the rounding of
+// sum / 6 to a double is taken only where the bound leaves one answer; anything else goes to the
+// integers. The filter needs the FMA instruction, which the code is compiled for where the CPU
+// has it.
+
+constexpr double kUnitRoundoff = 0x1p-53;
+
+// With every non-zero coordinate of magnitude in [2^-200, 2^200], no product or error term the
+// filter forms under- or overflows, so each rounding is within kUnitRoundoff of its result.
+constexpr double kFilterSmallest = 0x1p-200;
+constexpr double kFilterLargest = 0x1p+200;
+
+/// One group's sum: the value hi + lo; `magnitude` sums every product of three coordinates'
+/// magnitudes |a_i b_j c_k|; `lo_moved` sums the magnitudes of every rounded addition into lo.
+struct FilteredSum {
+  double hi = 0.0;
+  double lo = 0.0;
+  double magnitude = 0.0;
+  double lo_moved = 0.0;
+};
+
+/// s + e = a + b exactly (Knuth's two-sum).
+[[gnu::always_inline]] inline void two_sum(double a, double b, double& s, double& e) {
+  s = a + b;
+  const double b_part = s - a;
+  e = (a - (s - b_part)) + (b - b_part);
+}
+
+/// Adds one determinant dh + dl, whose terms' magnitudes sum to `magnitude`, to `sum`.
+[[gnu::always_inline]] inline void add_determinant(FilteredSum& sum, double dh, double dl,
+                                                   double magnitude) {
+  double hi = 0.0, carried = 0.0;
+  two_sum(sum.hi, dh, hi, carried);
+  const double added = carried + dl;
+  sum.hi = hi;
+  sum.lo += added;
+  sum.lo_moved += std::fabs(added) + std::fabs(sum.lo);
+  sum.magnitude += magnitude;
+}
+
+/// Adds the part `from` into `to`.
+void add_sum(FilteredSum& to, const FilteredSum& from) {
+  add_determinant(to, from.hi, from.lo, from.magnitude);
+  to.lo_moved += from.lo_moved;
+}
+
+/// a_k (b_i c_j - b_j c_i) as a high and a low part; adds the magnitudes of its two products of
+/// three coordinates to `magnitude`.
+[[gnu::target("fma"), gnu::always_inline]] inline void component_term(double ak, double bi,
+                                                                      double cj, double bj,
+                                                                      double ci, double& high,
+                                                                      double& low,
+                                                                      double& magnitude) {
+  const double p1 = bi * cj;
+  const double p2 = bj * ci;
+  const double e1 = __builtin_fma(bi, cj, -p1);
+  const double e2 = __builtin_fma(bj, ci, -p2);
+  double d = 0.0, g = 0.0;
+  two_sum(p1, -p2, d, g);
+  const double component_low = g + (e1 - e2);
+  high = ak * d;
+  low = __builtin_fma(ak, d, -high) + ak * component_low;
+  magnitude += std::fabs(ak) * (std::fabs(p1) + std::fabs(p2));
+}
+
+/// Error analysis, per facet, with u the unit roundoff and tau the sum of its six |a_i b_j c_k|:
+/// a component of b x c is p1 - p2 + (e1 - e2) with p1 + e1 and p2 + e2 the exact products;
+/// its low part is within 3 u^2 (|p1| + |p2|) of the truth. Multiplied by a's coordinate (exact
+/// product again, the low part's product rounded) a component term is within 8.1 u^2 |a_k| (|p1|
+/// + |p2|); adding the three terms as double-doubles rounds four more times, each within
+/// 5.1 u^2 tau. So a determinant is within 29 u^2 tau, taken as 64 u^2 tau below. Summing rounds
+/// each addition into lo within u of its result: u lo_moved in all.
+[[gnu::target("fma")]] void add_filtered_determinants(const IndexedMesh& mesh,
+                                                      const std::vector<std::uint32_t>& group,
+                                                      std::size_t begin, std::size_t end,
+                                                      FilteredSum* sums) {
+  const Vec3* v = mesh.vertices.data();
+  for (std::size_t f = begin; f < end; ++f) {
+    if (group[f] == kNoGroup) continue;
+    const auto& t = mesh.triangles[f];
+    const Vec3& a = v[t[0]];
+    const Vec3& b = v[t[1]];
+    const Vec3& c = v[t[2]];
+    double high[3], low[3], magnitude = 0.0;
+    component_term(a.x, b.y, c.z, b.z, c.y, high[0], low[0], magnitude);
+    component_term(a.y, b.z, c.x, b.x, c.z, high[1], low[1], magnitude);
+    component_term(a.z, b.x, c.y, b.y, c.x, high[2], low[2], magnitude);
+    double s1 = 0.0, r1 = 0.0, dh = 0.0, r2 = 0.0;
+    two_sum(high[0], high[1], s1, r1);
+    two_sum(s1, high[2], dh, r2);
+    const double dl = ((low[0] + low[1]) + low[2]) + (r1 + r2);
+    add_determinant(sums[group[f]], dh, dl, magnitude);
+  }
+}
+
+/// The error bound of a sum: the per-facet bound and the additions' (see above), doubled for the
+/// rounding of the bound's own sums.
+double error_bound(const FilteredSum& sum) {
+  return 2.0 *
+         (64.0 * kUnitRoundoff * kUnitRoundoff * sum.magnitude + kUnitRoundoff * sum.lo_moved);
+}
+
+/// The double nearest to (hi + lo) / 6 when every value within `error` of hi + lo rounds to it.
+[[gnu::target("fma")]] std::optional<double> decided_sixth(double hi, double lo, double error) {
+  if (error == 0.0 && hi == 0.0 && lo == 0.0) return 0.0;  // no term, or every term zero
+  double h = 0.0, l = 0.0;
+  two_sum(hi, lo, h, l);
+  // Far from under- and overflow, so that the remainder below is exact and the gaps normal.
+  if (!(std::fabs(h) >= 0x1p-900 && std::fabs(h) <= 0x1p+900) || !std::isfinite(error)) {
+    return std::nullopt;
+  }
+  const double yh = h / 6.0;
+  const double remainder = __builtin_fma(-6.0, yh, h);  // exact for a correctly rounded quotient
+  const double yl = (remainder + l) / 6.0;              // two roundings, within 2 u |yl| or so
+  double candidate = 0.0, residual = 0.0;
+  two_sum(yh, yl, candidate, residual);
+  const double distance =
+      std::fabs(residual) + error / 6.0 * 1.01 + 4.0 * kUnitRoundoff * std::fabs(yl);
+  const double gap = std::min(std::nextafter(candidate, HUGE_VAL) - candidate,
+                              candidate - std::nextafter(candidate, -HUGE_VAL));
+  if (!(distance < 0.4999 * gap)) return std::nullopt;
+  return candidate;
+}
+
+/// The volumes by the filter, or nothing where it cannot be sure of one rounding.
+std::optional<ExactVolumes> filtered_signed_volumes(
+    const IndexedMesh& mesh, const std::vector<std::uint32_t>& group_of_facet,
+    std::size_t num_groups, std::size_t parts) {
+  if (!__builtin_cpu_supports("fma")) return std::nullopt;
+  const bool in_range = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, mesh.vertices.size(), 4096), true,
+      [&](const auto& range, bool ok) {
+        for (std::size_t v = range.begin(); v < range.end() && ok; ++v) {
+          const Vec3& p = mesh.vertices[v];
+          for (const double x : {p.x, p.y, p.z}) {
+            const double m = std::fabs(x);
+            ok = ok && (m == 0.0 || (m >= kFilterSmallest && m <= kFilterLargest));
+          }
+        }
+        return ok;
+      },
+      [](bool a, bool b) { return a && b; });
+  if (!in_range) return std::nullopt;
+  const std::size_t nf = mesh.triangles.size();
+  std::vector<std::vector<FilteredSum>> part_sums(parts, std::vector<FilteredSum>(num_groups));
+  tbb::parallel_for(std::size_t{0}, parts, [&](std::size_t part) {
+    add_filtered_determinants(mesh, group_of_facet, nf * part / parts, nf * (part + 1) / parts,
+                              part_sums[part].data());
+  });
+  ExactVolumes result;
+  result.by_group_mm3.resize(num_groups);
+  FilteredSum total;
+  for (std::size_t g = 0; g < num_groups; ++g) {
+    FilteredSum sum;
+    for (std::size_t part = 0; part < parts; ++part) add_sum(sum, part_sums[part][g]);
+    const std::optional<double> volume = decided_sixth(sum.hi, sum.lo, error_bound(sum));
+    if (!volume) return std::nullopt;
+    result.by_group_mm3[g] = *volume;
+    add_sum(total, sum);
+  }
+  const std::optional<double> volume = decided_sixth(total.hi, total.lo, error_bound(total));
+  if (!volume) return std::nullopt;
+  result.total_mm3 = *volume;
+  result.decided_in_floating_point = true;
+  return result;
+}
 }  // namespace
 
 bool is_collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -233,9 +406,22 @@ ExactVolumes exact_signed_volumes(const IndexedMesh& mesh,
                                   const std::vector<std::uint32_t>& group_of_facet,
                                   std::size_t num_groups) {
   STRATA_ASSERT(group_of_facet.size() == mesh.triangles.size(), "one group per facet");
+  // The facets are cut into parts summed on their own. A part holds a sum for every group, so
+  // many groups (a soup of loose facets) make one part.
+  const std::size_t nf = mesh.triangles.size();
+  constexpr std::size_t kMaxParts = 8;
+  constexpr std::size_t kMinFacetsAPart = 16384;
+  const std::size_t parts =
+      num_groups > 64 ? 1 : std::clamp<std::size_t>(nf / kMinFacetsAPart, 1, kMaxParts);
+  if (std::optional<ExactVolumes> filtered =
+          filtered_signed_volumes(mesh, group_of_facet, num_groups, parts)) {
+    return *std::move(filtered);
+  }
+
   // All coordinates become integers times one common power of two, so the determinants are
-  // integer products and the sums need no gcd: exact and fast. The power is the lowest bit of
-  // any non-zero coordinate; the highest bit sets how wide the integers are.
+  // integer products and the sums need no gcd: exact, and their order does not matter. The
+  // power is the lowest bit of any non-zero coordinate; the highest bit sets how wide the
+  // integers are.
   struct BitSpan {
     int lowest = INT_MAX;
     int above_highest = INT_MIN;
@@ -261,15 +447,6 @@ ExactVolumes exact_signed_volumes(const IndexedMesh& mesh,
   ExactVolumes result;
   result.by_group_mm3.assign(num_groups, 0.0);
   if (min_exponent == INT_MAX) return result;  // every coordinate is zero
-
-  // The facets are cut into parts summed on their own; integer sums do not depend on the
-  // order. A part holds a sum for every group, so many groups (a soup of loose facets) make
-  // one part.
-  const std::size_t nf = mesh.triangles.size();
-  constexpr std::size_t kMaxParts = 8;
-  constexpr std::size_t kMinFacetsAPart = 16384;
-  const std::size_t parts =
-      num_groups > 64 ? 1 : std::clamp<std::size_t>(nf / kMinFacetsAPart, 1, kMaxParts);
 
   // The scaled coordinates' widths pick the arithmetic: four or six limbs while the sum over
   // every facet fits them (the usual case: a model's coordinates span a few powers of ten, or

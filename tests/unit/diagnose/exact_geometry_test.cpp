@@ -122,6 +122,24 @@ IndexedMesh random_facets(int spread, std::uint32_t seed) {
   return mesh;
 }
 
+/// sum(a · (b x c)) over the facets of each group, as rationals: the definition the sums are held
+/// to.
+std::vector<mpq_class> rational_determinant_sums(const IndexedMesh& mesh,
+                                                 const std::vector<std::uint32_t>& group,
+                                                 std::size_t num_groups) {
+  std::vector<mpq_class> sums(num_groups);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (group[f] == kNoGroup) continue;
+    const Vec3& a = mesh.vertices[mesh.triangles[f][0]];
+    const Vec3& b = mesh.vertices[mesh.triangles[f][1]];
+    const Vec3& c = mesh.vertices[mesh.triangles[f][2]];
+    sums[group[f]] += mpq_class(a.x) * (mpq_class(b.y) * c.z - mpq_class(b.z) * c.y) +
+                      mpq_class(a.y) * (mpq_class(b.z) * c.x - mpq_class(b.x) * c.z) +
+                      mpq_class(a.z) * (mpq_class(b.x) * c.y - mpq_class(b.y) * c.x);
+  }
+  return sums;
+}
+
 TEST(ExactSignedVolumes, EveryArithmeticSumsAsRationalsDo) {
   // spread 2: at most 57 bits (four limbs); 10: up to 73, four limbs' limit; 20: up to 93 (six
   // limbs); 31: up to 115, near six limbs' limit; 40: up to 133 (GMP).
@@ -131,16 +149,9 @@ TEST(ExactSignedVolumes, EveryArithmeticSumsAsRationalsDo) {
       const IndexedMesh mesh = random_facets(spread, seed);
       const std::size_t nf = mesh.triangles.size();
       std::vector<std::uint32_t> group(nf);
-      std::vector<mpq_class> expected(3);
-      for (std::size_t f = 0; f < nf; ++f) {
+      for (std::size_t f = 0; f < nf; ++f)
         group[f] = static_cast<std::uint32_t>((f * 7 + seed) % 3);
-        const Vec3& a = mesh.vertices[mesh.triangles[f][0]];
-        const Vec3& b = mesh.vertices[mesh.triangles[f][1]];
-        const Vec3& c = mesh.vertices[mesh.triangles[f][2]];
-        expected[group[f]] += mpq_class(a.x) * (mpq_class(b.y) * c.z - mpq_class(b.z) * c.y) +
-                              mpq_class(a.y) * (mpq_class(b.z) * c.x - mpq_class(b.x) * c.z) +
-                              mpq_class(a.z) * (mpq_class(b.x) * c.y - mpq_class(b.y) * c.x);
-      }
+      const std::vector<mpq_class> expected = rational_determinant_sums(mesh, group, 3);
       const ExactVolumes v = exact_signed_volumes(mesh, group, 3);
       mpq_class total;
       for (std::size_t g = 0; g < 3; ++g) {
@@ -173,6 +184,74 @@ TEST(ExactSignedVolumes, SubnormalAndNegativeCoordinatesSumAsRationalsDo) {
   const ExactVolumes v = exact_signed_volumes(mesh, std::vector<std::uint32_t>(4, 0), 1);
   EXPECT_EQ(v.total_mm3, test::nearest_double(expected / 6));
   EXPECT_NE(v.total_mm3, 0.0);
+}
+
+TEST(ExactSignedVolumes, FacetsInNoGroupAreLeftOut) {
+  IndexedMesh mesh = cube_at(0.5, 0.25, 0.125, 2);
+  // A facet with area, in no group: were it summed, the volume would change.
+  mesh.vertices.push_back({3, 0, 0});
+  mesh.triangles.push_back({0, 1, static_cast<VertexIndex>(mesh.vertices.size() - 1)});
+  std::vector<std::uint32_t> group(mesh.triangles.size(), 0);
+  group.back() = kNoGroup;
+  const ExactVolumes v = exact_signed_volumes(mesh, group, 1);
+  EXPECT_EQ(v.by_group_mm3, std::vector<double>{8.0});
+  EXPECT_EQ(v.total_mm3, 8.0);
+}
+
+TEST(ExactSignedVolumes, FloatingPointDecidesWellConditionedSums) {
+  // Coordinates of a few bits' spread and no cancellation to speak of: the filter's bound leaves
+  // one rounding, which must be the rationals' (40,000 facets in three groups).
+  const IndexedMesh mesh = random_facets(2, 7);
+  std::vector<std::uint32_t> group(mesh.triangles.size());
+  for (std::size_t f = 0; f < group.size(); ++f) group[f] = static_cast<std::uint32_t>(f % 3);
+  const ExactVolumes v = exact_signed_volumes(mesh, group, 3);
+  EXPECT_TRUE(v.decided_in_floating_point);
+  const std::vector<mpq_class> expected = rational_determinant_sums(mesh, group, 3);
+  for (std::size_t g = 0; g < 3; ++g) {
+    EXPECT_EQ(v.by_group_mm3[g], test::nearest_double(expected[g] / 6)) << "group " << g;
+  }
+  EXPECT_EQ(v.total_mm3, test::nearest_double((expected[0] + expected[1] + expected[2]) / 6));
+}
+
+TEST(ExactSignedVolumes, TiesAndCancellationGoToTheIntegers) {
+  // Two facets against the origin with determinants 6 and 6 2^-53: the volume 1 + 2^-53 lies
+  // halfway between two doubles, which no error bound can decide; it rounds to even, 1.
+  IndexedMesh tie;
+  tie.vertices = {{1, 0, 0}, {0, 1, 0}, {0, 0, 6}, {0, 0, 0x3p-52}};
+  tie.triangles = {{0, 1, 2}, {0, 1, 3}};
+  const ExactVolumes halfway = exact_signed_volumes(tie, {0, 0}, 1);
+  EXPECT_FALSE(halfway.decided_in_floating_point);
+  EXPECT_EQ(halfway.total_mm3, 1.0);
+  // Tetrahedra of order 1e45 that cancel to 1: beyond any double-double's reach.
+  const IndexedMesh far = cube_at(1e15, -1e15, 3e15, 1);
+  const ExactVolumes cancelled = exact_signed_volumes(far, std::vector<std::uint32_t>(12, 0), 1);
+  EXPECT_FALSE(cancelled.decided_in_floating_point);
+  EXPECT_EQ(cancelled.total_mm3, 1.0);
+}
+
+TEST(ExactSignedVolumes, EitherWayTheSumIsTheRationalOne) {
+  // Closed boxes with jittered corners, moved ever farther from the origin: the cancellation
+  // grows until the filter gives way to the integers. Every volume is held to the rationals,
+  // and both ways must have been taken.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.01, 0.01);
+  int by_filter = 0, by_integers = 0;
+  for (int k = 0; k <= 60; k += 2) {
+    const double offset = std::ldexp(1.0, k);
+    IndexedMesh mesh = cube_at(offset, -0.75 * offset, 0.5 * offset, 0.7);
+    for (Vec3& p : mesh.vertices) {
+      p.x += jitter(rng);
+      p.y += jitter(rng);
+      p.z += jitter(rng);
+    }
+    const std::vector<std::uint32_t> group(mesh.triangles.size(), 0);
+    const ExactVolumes v = exact_signed_volumes(mesh, group, 1);
+    EXPECT_EQ(v.total_mm3, test::nearest_double(rational_determinant_sums(mesh, group, 1)[0] / 6))
+        << "offset 2^" << k;
+    ++(v.decided_in_floating_point ? by_filter : by_integers);
+  }
+  EXPECT_GT(by_filter, 5);
+  EXPECT_GT(by_integers, 5);
 }
 
 }  // namespace
