@@ -1,8 +1,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
-#include <CGAL/Surface_mesh.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
@@ -27,7 +27,6 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 // predicates (exact in Epick), the orientation is combinatorial, and no point is constructed, so
 // Epick gives the same soup as Epeck without a lazy number per coordinate.
 using Point3 = CGAL::Epick::Point_3;
-using Mesh = CGAL::Surface_mesh<Point3>;
 using Polygon = std::vector<std::size_t>;
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
@@ -67,19 +66,57 @@ bool is_clean_soup(const IndexedMesh& mesh) {
   return std::adjacent_find(corners.begin(), corners.end()) == corners.end();
 }
 
+/// The oriented soup, when it is a polygon mesh of triangles, as a halfedge structure in flat
+/// arrays: halfedge 3 f + k runs along face f from its corner k to corner k + 1, so that a
+/// halfedge's face and the next one round the face are arithmetic, and only the opposite
+/// halfedges are stored: 24 bytes a face, where a CGAL::Surface_mesh took over 80.
 struct SoupMesh::Impl {
   const IndexedMesh& input;
   ExactSliceReport report;
-  Mesh mesh;
   bool usable = false;
-  std::vector<Vec3> vertex_position;      ///< per mesh vertex
-  std::vector<std::uint32_t> face_facet;  ///< per mesh face: its input facet, or kNone
+  std::vector<std::array<std::uint32_t, 3>> faces;  ///< the oriented soup's triangles
+  std::vector<std::uint32_t> opposite;              ///< per halfedge; kNone at a border
+  std::vector<Vec3> vertex_position;                ///< per soup point
+  std::vector<std::uint32_t> face_facet;            ///< per face: its input facet, or kNone
   /// Per input facet: its face's halfedge along the facet's edge from corner 0 to corner 1, with
   /// kReversed set when the face runs the other way round; kNone when it has no face. A segment
   /// then finds the halfedges of its two edges from their corner numbers alone.
   std::vector<std::uint32_t> facet_edge0;
 
   explicit Impl(const IndexedMesh& m) : input(m) {}
+
+  static std::uint32_t face_of(std::uint32_t h) { return h / 3; }
+  static std::uint32_t next(std::uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
+  std::uint32_t source(std::uint32_t h) const { return faces[h / 3][h % 3]; }
+  std::uint32_t target(std::uint32_t h) const { return source(next(h)); }
+
+  /// Fills `opposite`: the halfedge from v to u of each halfedge from u to v, found among v's
+  /// outgoing halfedges (a polygon mesh has at most one).
+  void link_opposites(std::size_t point_count) {
+    const std::size_t halfedges = 3 * faces.size();
+    std::vector<std::uint32_t> first(point_count + 1, 0);
+    for (std::uint32_t h = 0; h < halfedges; ++h) ++first[source(h) + 1];
+    for (std::size_t v = 0; v < point_count; ++v) first[v + 1] += first[v];
+    std::vector<std::uint32_t> outgoing(halfedges);
+    {
+      std::vector<std::uint32_t> at(first.begin(), first.end() - 1);
+      for (std::uint32_t h = 0; h < halfedges; ++h) outgoing[at[source(h)]++] = h;
+    }
+    opposite.assign(halfedges, kNone);
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, static_cast<std::uint32_t>(halfedges)),
+                      [&](const auto& range) {
+                        for (std::uint32_t h = range.begin(); h < range.end(); ++h) {
+                          const std::uint32_t u = source(h);
+                          const std::uint32_t v = target(h);
+                          for (std::uint32_t i = first[v]; i < first[v + 1]; ++i) {
+                            if (target(outgoing[i]) == u) {
+                              opposite[h] = outgoing[i];
+                              break;
+                            }
+                          }
+                        }
+                      });
+  }
 };
 
 SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(input)) {
@@ -117,12 +154,16 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
     if (polygons.empty() || !(already_mesh || soup::is_polygon_mesh(polygons, points.size()))) {
       return;
     }
-    PMP::polygon_soup_to_polygon_mesh(points, polygons, d.mesh);
-    // The conversion adds vertex i for point i and face i for polygon i; check it did.
-    if (d.mesh.number_of_vertices() != points.size() ||
-        d.mesh.number_of_faces() != polygons.size()) {
-      return;
+    // Halfedges are numbered below kReversed; orientation leaves triangles triangles.
+    if (polygons.size() >= kReversed / 3) return;
+    d.faces.resize(polygons.size());
+    for (std::size_t i = 0; i < polygons.size(); ++i) {
+      const auto& p = polygons[i];
+      if (p.size() != 3) return;
+      d.faces[i] = {static_cast<std::uint32_t>(p[0]), static_cast<std::uint32_t>(p[1]),
+                    static_cast<std::uint32_t>(p[2])};
     }
+    d.link_opposites(points.size());
     d.vertex_position.resize(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) d.vertex_position[i] = to_vec3(points[i]);
 
@@ -153,41 +194,32 @@ SoupMesh::SoupMesh(const IndexedMesh& input) : impl_(std::make_unique<Impl>(inpu
     };
     // The face's halfedge on the facet's edge 0, found by positions (the repair may have merged
     // the facet's vertices into other indices); kNone unless the face's corners are the facet's.
-    const auto edge0_of = [&](std::uint32_t facet, Mesh::Face_index face) {
+    const auto edge0_of = [&](std::uint32_t facet, std::uint32_t face) {
       const auto& t = input.triangles[facet];
       const Vec3* corner[3] = {&input.vertices[t[0]], &input.vertices[t[1]], &input.vertices[t[2]]};
-      const Mesh::Halfedge_index h0 = d.mesh.halfedge(face);
-      const Mesh::Halfedge_index h[3] = {h0, d.mesh.next(h0), d.mesh.next(d.mesh.next(h0))};
+      const std::uint32_t h[3] = {3 * face, 3 * face + 1, 3 * face + 2};
       for (int k = 0; k < 3; ++k) {
-        const Vec3& source = d.vertex_position[d.mesh.source(h[k])];
-        const Vec3& s1 = d.vertex_position[d.mesh.source(h[(k + 1) % 3])];
-        const Vec3& s2 = d.vertex_position[d.mesh.source(h[(k + 2) % 3])];
+        const Vec3& source = d.vertex_position[d.source(h[k])];
+        const Vec3& s1 = d.vertex_position[d.source(h[(k + 1) % 3])];
+        const Vec3& s2 = d.vertex_position[d.source(h[(k + 2) % 3])];
         if (source != *corner[0]) continue;
-        if (s1 == *corner[1] && s2 == *corner[2]) return static_cast<std::uint32_t>(h[k]);
+        if (s1 == *corner[1] && s2 == *corner[2]) return h[k];
         // Reversed, the face runs corner 0, 2, 1: its edge 0 is the halfedge from corner 1.
-        if (s1 == *corner[2] && s2 == *corner[1])
-          return static_cast<std::uint32_t>(h[(k + 2) % 3]) | kReversed;
+        if (s1 == *corner[2] && s2 == *corner[1]) return h[(k + 2) % 3] | kReversed;
       }
       return kNone;
     };
     d.face_facet.assign(polygons.size(), kNone);
     for (std::size_t i = 0; i < polygons.size(); ++i) {
       const auto& p = polygons[i];
-      const Mesh::Face_index face(static_cast<Mesh::size_type>(i));
-      std::size_t corners = 0;
-      bool matches = p.size() == 3;
-      for (const Mesh::Vertex_index v : d.mesh.vertices_around_face(d.mesh.halfedge(face))) {
-        matches = matches && std::find(p.begin(), p.end(), static_cast<std::size_t>(v)) != p.end();
-        ++corners;
-      }
-      if (!matches || corners != 3) return;  // not the face of polygon i: no halfedge path at all
+      const auto face = static_cast<std::uint32_t>(i);
       const std::uint32_t facet =
           facet_order
               ? static_cast<std::uint32_t>(i)
               : facet_at(soup::position_key(
                     {d.vertex_position[p[0]], d.vertex_position[p[1]], d.vertex_position[p[2]]}));
       if (facet == kNone) continue;
-      d.face_facet[i] = facet;
+      d.face_facet[face] = facet;
       d.facet_edge0[facet] = edge0_of(facet, face);
     }
     d.usable = true;
@@ -231,16 +263,16 @@ std::optional<std::vector<ExactLoop>> SoupMesh::chain_layer(ExactLayer& layer) c
   const auto& segments = layer.segments;
   const std::size_t n = segments.size();
   constexpr std::size_t kInactive = std::numeric_limits<std::size_t>::max();
-  std::vector<Mesh::Halfedge_index> start_h(n);
-  std::vector<Mesh::Halfedge_index> end_h(n);
+  std::vector<std::uint32_t> start_h(n);
+  std::vector<std::uint32_t> end_h(n);
   std::vector<bool> active(n, false);
 
   // The halfedge of edge k (from corner k to corner k + 1) of a facet whose edge 0 is h0: k steps
   // along the face, or 3 - k when the face runs against the facet.
   const auto edge_halfedge = [&](std::uint32_t edge0, int k) {
-    Mesh::Halfedge_index h(edge0 & ~kReversed);
+    std::uint32_t h = edge0 & ~kReversed;
     const int steps = (edge0 & kReversed) != 0 ? (3 - k) % 3 : k;
-    for (int i = 0; i < steps; ++i) h = d.mesh.next(h);
+    for (int i = 0; i < steps; ++i) h = Impl::next(h);
     return h;
   };
   for (std::size_t s = 0; s < n; ++s) {
@@ -297,10 +329,9 @@ std::optional<std::vector<ExactLoop>> SoupMesh::chain_layer(ExactLayer& layer) c
       used[current] = true;
       loop.push_back(segments[current].start);
       ++uses[segments[current].start];
-      const Mesh::Halfedge_index across = d.mesh.opposite(end_h[current]);
-      const Mesh::Face_index next_face = d.mesh.face(across);
-      if (next_face == Mesh::null_face()) return std::nullopt;  // a border: the chain is open
-      const std::uint32_t facet = d.face_facet[next_face];
+      const std::uint32_t across = d.opposite[end_h[current]];
+      if (across == kNone) return std::nullopt;  // a border: the chain is open
+      const std::uint32_t facet = d.face_facet[Impl::face_of(across)];
       if (facet == kNone) return std::nullopt;
       const std::size_t next = segment_of(facet, segments[current].end);
       if (next == kInactive || !active[next] || start_h[next] != across) return std::nullopt;

@@ -20,9 +20,9 @@ namespace strata::exact::detail {
 bool is_clean_soup(const IndexedMesh& mesh);
 
 /// The mesh read as a polygon soup into CGAL, repaired (repair_polygon_soup) and oriented
-/// (orient_polygon_soup), and, when that is a polygon mesh, held as a CGAL::Surface_mesh whose
-/// faces know the input facet they come from. The repair never changes the slice: segment
-/// directions always come from the input facets' own vertex order.
+/// (orient_polygon_soup), and, when that is a polygon mesh of triangles, held as a halfedge
+/// structure whose faces know the input facet they come from. The repair never changes the slice:
+/// segment directions always come from the input facets' own vertex order.
 class SoupMesh {
  public:
   /// Builds the soup and the halfedge structure. Throws what CGAL throws (the caller turns it
