@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <iterator>
 #include <numeric>
 #include <span>
@@ -218,6 +219,23 @@ ByVertex<Item> sort_by_vertex(std::size_t num_vertices, std::size_t num_facets, 
   return out;
 }
 
+/// Sorts a vertex's few items (a dozen about a vertex of a closed mesh) by insertion, where
+/// std::sort's set-up costs more than the sort; many items by std::sort.
+template <class Iterator, class Less = std::less<>>
+void sort_few(Iterator first, Iterator last, Less less = {}) {
+  constexpr std::ptrdiff_t kFew = 32;
+  if (last - first > kFew) {
+    std::sort(first, last, less);
+    return;
+  }
+  for (Iterator i = first + (first != last ? 1 : 0); i < last; ++i) {
+    auto item = std::move(*i);
+    Iterator j = i;
+    for (; j != first && less(item, *(j - 1)); --j) *j = std::move(*(j - 1));
+    *j = std::move(item);
+  }
+}
+
 /// The edge uses of every facet not in `skip` (zero-length edges left out), sorted by edge and
 /// then facet. A counting sort by the lower vertex, then a sort of each vertex's few uses by
 /// (hi, facet, forward): linear but for those small sorts, and no copy of the uses.
@@ -244,7 +262,7 @@ std::vector<EdgeUse> collect_edge_uses(const IndexedMesh& mesh, const std::vecto
                       for (std::size_t v = range.begin(); v < range.end(); ++v) {
                         const auto first = uses.begin() + static_cast<std::ptrdiff_t>(start[v]);
                         const auto last = uses.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
-                        if (last - first > 1) std::sort(first, last, by_hi_facet);
+                        sort_few(first, last, by_hi_facet);
                       }
                     });
   return std::move(uses);
@@ -370,7 +388,7 @@ void find_vertex_defects_and_duplicates(const IndexedMesh& mesh,
   std::vector<std::uint8_t> is_non_manifold(nv, 0);
   std::vector<std::uint8_t> is_duplicate(mesh.triangles.size(), 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 2048), [&](const auto& range) {
-    std::vector<std::pair<VertexIndex, std::uint32_t>> neighbours;  // (other vertex, local facet)
+    std::vector<std::uint64_t> neighbours;  // other vertex << 32 | local facet
     std::vector<std::pair<std::uint64_t, FacetIndex>> lowest_here;  // (other two vertices, facet)
     UnionFind fans(0);
     for (std::size_t v = range.begin(); v < range.end(); ++v) {
@@ -382,7 +400,7 @@ void find_vertex_defects_and_duplicates(const IndexedMesh& mesh,
         const FacetIndex f = around.items[first + k];
         auto t = mesh.triangles[f];
         for (VertexIndex w : t) {
-          if (w != v) neighbours.push_back({w, static_cast<std::uint32_t>(k)});
+          if (w != v) neighbours.push_back((std::uint64_t{w} << 32) | k);
         }
         std::sort(t.begin(), t.end());
         if (t[0] == v) lowest_here.push_back({(std::uint64_t{t[1]} << 32) | t[2], f});
@@ -395,11 +413,12 @@ void find_vertex_defects_and_duplicates(const IndexedMesh& mesh,
         }
       }
       if (n < 2) continue;
-      std::sort(neighbours.begin(), neighbours.end());
+      sort_few(neighbours.begin(), neighbours.end());
       fans.reset(n);
       for (std::size_t s = 1; s < neighbours.size(); ++s) {
-        if (neighbours[s].first == neighbours[s - 1].first) {
-          fans.unite(neighbours[s].second, neighbours[s - 1].second);
+        if ((neighbours[s] >> 32) == (neighbours[s - 1] >> 32)) {
+          fans.unite(static_cast<std::uint32_t>(neighbours[s]),
+                     static_cast<std::uint32_t>(neighbours[s - 1]));
         }
       }
       std::size_t num_fans = 0;
