@@ -282,8 +282,13 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   out.summary = std::move(summary).value();
   out.options = *options;
   const double seconds_total = std::chrono::duration<double>(Clock::now() - started).count();
-  auto report = slice_report_json(m, mesh_report, *options, o.kernel, out.summary, seconds_total);
-  report["plan"] = nlohmann::json::parse(plan_json(out.plan));
+  // The report is written as JSON and shown on the page; contour outputs alone make neither.
+  const bool report_wanted = formats->count("json") != 0 || view_collector != nullptr;
+  nlohmann::json report;
+  if (report_wanted) {
+    report = slice_report_json(m, mesh_report, *options, o.kernel, out.summary, seconds_total);
+    report["plan"] = nlohmann::json::parse(plan_json(out.plan));
+  }
   if (formats->count("json")) {
     // What `strata merge` needs to join ranges: which layers, of which run, in which outputs.
     auto fingerprint =
@@ -293,7 +298,7 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
     report["fingerprint"] = *fingerprint;
     report["formats"] = *formats;
   }
-  if (out.repair_log) {
+  if (report_wanted && out.repair_log) {
     report["repair"] = nlohmann::json::parse(repair::repair_log_json(*out.repair_log));
     report["repair"]["seconds"] = out.seconds_repair;
   }
