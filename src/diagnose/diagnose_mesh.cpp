@@ -228,7 +228,7 @@ void sort_few(Iterator first, Iterator last, Less less = {}) {
     std::sort(first, last, less);
     return;
   }
-  for (Iterator i = first + (first != last ? 1 : 0); i < last; ++i) {
+  for (Iterator i = first; i != last; ++i) {
     auto item = std::move(*i);
     Iterator j = i;
     for (; j != first && less(item, *(j - 1)); --j) *j = std::move(*(j - 1));

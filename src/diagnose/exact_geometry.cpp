@@ -317,13 +317,13 @@ double error_bound(const FilteredSum& sum) {
 
 /// The double nearest to (hi + lo) / 6 when every value within `error` of hi + lo rounds to it.
 [[gnu::target("fma")]] std::optional<double> decided_sixth(double hi, double lo, double error) {
-  if (error == 0.0 && hi == 0.0 && lo == 0.0) return 0.0;  // no term, or every term zero
+  // No error: every product of coordinates was zero (or there was none), and so is the sum.
+  if (error == 0.0) return 0.0;
   double h = 0.0, l = 0.0;
   two_sum(hi, lo, h, l);
-  // Far from under- and overflow, so that the remainder below is exact and the gaps normal.
-  if (!(std::fabs(h) >= 0x1p-900 && std::fabs(h) <= 0x1p+900) || !std::isfinite(error)) {
-    return std::nullopt;
-  }
+  // Far from underflow, so that the remainder below is exact and the gaps normal. (The sums are
+  // far from overflow: the coordinates are below 2^200.)
+  if (!(std::fabs(h) >= 0x1p-900)) return std::nullopt;
   const double yh = h / 6.0;
   const double remainder = __builtin_fma(-6.0, yh, h);  // exact for a correctly rounded quotient
   const double yl = (remainder + l) / 6.0;              // two roundings, within 2 u |yl| or so
@@ -402,22 +402,34 @@ int normal_agreement_sign(const Vec3& n, const Vec3& a, const Vec3& b, const Vec
   return sgn(exact_det(n, a, b, c));
 }
 
+namespace {
+
+/// The facets are cut into parts summed on their own. A part holds a sum for every group, so
+/// many groups (a soup of loose facets) make one part.
+std::size_t parts_to_sum(std::size_t num_facets, std::size_t num_groups) {
+  constexpr std::size_t kMaxParts = 8;
+  constexpr std::size_t kMinFacetsAPart = 16384;
+  return num_groups > 64 ? 1 : std::clamp<std::size_t>(num_facets / kMinFacetsAPart, 1, kMaxParts);
+}
+
+}  // namespace
+
 ExactVolumes exact_signed_volumes(const IndexedMesh& mesh,
                                   const std::vector<std::uint32_t>& group_of_facet,
                                   std::size_t num_groups) {
   STRATA_ASSERT(group_of_facet.size() == mesh.triangles.size(), "one group per facet");
-  // The facets are cut into parts summed on their own. A part holds a sum for every group, so
-  // many groups (a soup of loose facets) make one part.
-  const std::size_t nf = mesh.triangles.size();
-  constexpr std::size_t kMaxParts = 8;
-  constexpr std::size_t kMinFacetsAPart = 16384;
-  const std::size_t parts =
-      num_groups > 64 ? 1 : std::clamp<std::size_t>(nf / kMinFacetsAPart, 1, kMaxParts);
-  if (std::optional<ExactVolumes> filtered =
-          filtered_signed_volumes(mesh, group_of_facet, num_groups, parts)) {
+  if (std::optional<ExactVolumes> filtered = filtered_signed_volumes(
+          mesh, group_of_facet, num_groups, parts_to_sum(mesh.triangles.size(), num_groups))) {
     return *std::move(filtered);
   }
+  return integer_signed_volumes(mesh, group_of_facet, num_groups);
+}
 
+ExactVolumes integer_signed_volumes(const IndexedMesh& mesh,
+                                    const std::vector<std::uint32_t>& group_of_facet,
+                                    std::size_t num_groups) {
+  STRATA_ASSERT(group_of_facet.size() == mesh.triangles.size(), "one group per facet");
+  const std::size_t parts = parts_to_sum(mesh.triangles.size(), num_groups);
   // All coordinates become integers times one common power of two, so the determinants are
   // integer products and the sums need no gcd: exact, and their order does not matter. The
   // power is the lowest bit of any non-zero coordinate; the highest bit sets how wide the

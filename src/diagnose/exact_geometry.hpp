@@ -37,4 +37,10 @@ ExactVolumes exact_signed_volumes(const IndexedMesh& mesh,
                                   const std::vector<std::uint32_t>& group_of_facet,
                                   std::size_t num_groups);
 
+/// The same volumes always summed on integers, as exact_signed_volumes does where its
+/// floating-point filter cannot decide (decided_in_floating_point is false).
+ExactVolumes integer_signed_volumes(const IndexedMesh& mesh,
+                                    const std::vector<std::uint32_t>& group_of_facet,
+                                    std::size_t num_groups);
+
 }  // namespace strata::diagnose::detail

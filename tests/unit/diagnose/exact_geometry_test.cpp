@@ -142,26 +142,39 @@ std::vector<mpq_class> rational_determinant_sums(const IndexedMesh& mesh,
 
 TEST(ExactSignedVolumes, EveryArithmeticSumsAsRationalsDo) {
   // spread 2: at most 57 bits (four limbs); 10: up to 73, four limbs' limit; 20: up to 93 (six
-  // limbs); 31: up to 115, near six limbs' limit; 40: up to 133 (GMP).
+  // limbs); 31: up to 115, near six limbs' limit; 40: up to 133 (GMP). Every fifth facet is in
+  // no group. The integers are held to the rationals, and the filter, where it decides, to both.
   for (const int spread : {2, 10, 20, 31, 40}) {
-    {
-      const auto seed = static_cast<std::uint32_t>(spread);
-      const IndexedMesh mesh = random_facets(spread, seed);
-      const std::size_t nf = mesh.triangles.size();
-      std::vector<std::uint32_t> group(nf);
-      for (std::size_t f = 0; f < nf; ++f)
-        group[f] = static_cast<std::uint32_t>((f * 7 + seed) % 3);
-      const std::vector<mpq_class> expected = rational_determinant_sums(mesh, group, 3);
-      const ExactVolumes v = exact_signed_volumes(mesh, group, 3);
-      mpq_class total;
-      for (std::size_t g = 0; g < 3; ++g) {
-        EXPECT_EQ(v.by_group_mm3[g], test::nearest_double(expected[g] / 6))
-            << "spread " << spread << " seed " << seed << " group " << g;
-        total += expected[g];
-      }
-      EXPECT_EQ(v.total_mm3, test::nearest_double(total / 6)) << "spread " << spread;
+    const auto seed = static_cast<std::uint32_t>(spread);
+    const IndexedMesh mesh = random_facets(spread, seed);
+    const std::size_t nf = mesh.triangles.size();
+    std::vector<std::uint32_t> group(nf);
+    for (std::size_t f = 0; f < nf; ++f) {
+      group[f] = f % 5 == 4 ? kNoGroup : static_cast<std::uint32_t>((f * 7 + seed) % 3);
     }
+    const std::vector<mpq_class> expected = rational_determinant_sums(mesh, group, 3);
+    const ExactVolumes v = integer_signed_volumes(mesh, group, 3);
+    EXPECT_FALSE(v.decided_in_floating_point);
+    mpq_class total;
+    for (std::size_t g = 0; g < 3; ++g) {
+      EXPECT_EQ(v.by_group_mm3[g], test::nearest_double(expected[g] / 6))
+          << "spread " << spread << " seed " << seed << " group " << g;
+      total += expected[g];
+    }
+    EXPECT_EQ(v.total_mm3, test::nearest_double(total / 6)) << "spread " << spread;
+    const ExactVolumes either = exact_signed_volumes(mesh, group, 3);
+    EXPECT_EQ(either.by_group_mm3, v.by_group_mm3) << "spread " << spread;
+    EXPECT_EQ(either.total_mm3, v.total_mm3) << "spread " << spread;
   }
+}
+
+TEST(ExactSignedVolumes, IntegersSumZeroCoordinatesToZero) {
+  IndexedMesh mesh;
+  mesh.vertices = {{0, 0, 0}, {0, -0.0, 0}, {0, 0, -0.0}};
+  mesh.triangles = {{0, 1, 2}, {2, 1, 0}};
+  const ExactVolumes v = integer_signed_volumes(mesh, {0, 1}, 2);
+  EXPECT_EQ(v.by_group_mm3, (std::vector<double>{0.0, 0.0}));
+  EXPECT_EQ(v.total_mm3, 0.0);
 }
 
 TEST(ExactSignedVolumes, SubnormalAndNegativeCoordinatesSumAsRationalsDo) {
@@ -227,6 +240,39 @@ TEST(ExactSignedVolumes, TiesAndCancellationGoToTheIntegers) {
   const ExactVolumes cancelled = exact_signed_volumes(far, std::vector<std::uint32_t>(12, 0), 1);
   EXPECT_FALSE(cancelled.decided_in_floating_point);
   EXPECT_EQ(cancelled.total_mm3, 1.0);
+}
+
+TEST(ExactSignedVolumes, EmptyGroupsAndCancellingSheetsAreExactlyZero) {
+  // Group 1 has no facet: zero without doubt. The sheet's two sides cancel exactly, which the
+  // filter's bound cannot tell from a tiny volume: the integers say zero.
+  IndexedMesh mesh;
+  mesh.vertices = {{0.1, 0.2, 0.3}, {1.7, 0.25, 0.35}, {0.15, 1.9, 0.45}};
+  mesh.triangles = {{0, 1, 2}, {0, 2, 1}};
+  const ExactVolumes empty_group = exact_signed_volumes(mesh, {kNoGroup, kNoGroup}, 2);
+  EXPECT_TRUE(empty_group.decided_in_floating_point);
+  EXPECT_EQ(empty_group.by_group_mm3, (std::vector<double>{0.0, 0.0}));
+  const ExactVolumes sheet = exact_signed_volumes(mesh, {0, 0}, 1);
+  EXPECT_FALSE(sheet.decided_in_floating_point);
+  EXPECT_EQ(sheet.total_mm3, 0.0);
+}
+
+TEST(ExactSignedVolumes, CoordinatesBeyondTheFiltersRangeGoToTheIntegers) {
+  // A cube of edge 2^290 at x = 2^300: its products of coordinates would overflow the filter's
+  // bounds; its volume 2^870 is exact.
+  const IndexedMesh huge = cube_at(0x1p300, 0.0, 0.0, 0x1p290);
+  const ExactVolumes v = exact_signed_volumes(huge, std::vector<std::uint32_t>(12, 0), 1);
+  EXPECT_FALSE(v.decided_in_floating_point);
+  EXPECT_EQ(v.total_mm3, 0x1p870);
+  // 2,000 unit cubes and one vertex no facet uses, with a coordinate below the filter's range:
+  // every vertex is looked at, and the sums go to the integers.
+  IndexedMesh cubes;
+  for (int i = 0; i < 2000; ++i) test::append_mesh(cubes, cube_at(3.0 * i, 0.5, -2.0, 1));
+  const std::vector<std::uint32_t> group(cubes.triangles.size(), 0);
+  EXPECT_TRUE(exact_signed_volumes(cubes, group, 1).decided_in_floating_point);
+  cubes.vertices.push_back({1.0, 0x1p-300, 2.0});
+  const ExactVolumes tiny = exact_signed_volumes(cubes, group, 1);
+  EXPECT_FALSE(tiny.decided_in_floating_point);
+  EXPECT_EQ(tiny.total_mm3, 2000.0);
 }
 
 TEST(ExactSignedVolumes, EitherWayTheSumIsTheRationalOne) {
