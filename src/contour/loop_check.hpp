@@ -204,10 +204,19 @@ class LoopChecker {
     const auto row = [&](double y) {
       return std::clamp<std::int64_t>(static_cast<std::int64_t>((y - y0) / cell), 0, ny - 1);
     };
+    // Each piece's buckets, found once: its columns i0..i1 and rows j0..j1.
+    struct Span {
+      std::int64_t i0, i1, j0, j1;
+    };
+    std::vector<Span> spans(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const Piece& p = pieces_[k];
+      spans[k] = {column(p.x_min), column(p.x_max), row(p.y_min), row(p.y_max)};
+    }
     std::vector<std::uint32_t> offsets(static_cast<std::size_t>(nx * ny) + 1, 0);
-    for (const Piece& p : pieces_) {
-      for (std::int64_t j = row(p.y_min); j <= row(p.y_max); ++j) {
-        for (std::int64_t i = column(p.x_min); i <= column(p.x_max); ++i) ++offsets[j * nx + i + 1];
+    for (const Span& s : spans) {
+      for (std::int64_t j = s.j0; j <= s.j1; ++j) {
+        for (std::int64_t i = s.i0; i <= s.i1; ++i) ++offsets[j * nx + i + 1];
       }
     }
     for (std::size_t b = 1; b < offsets.size(); ++b) offsets[b] += offsets[b - 1];
@@ -215,11 +224,9 @@ class LoopChecker {
     {
       std::vector<std::uint32_t> cursor(offsets.begin(), offsets.end() - 1);
       for (std::uint32_t k = 0; k < n; ++k) {
-        const Piece& p = pieces_[k];
-        for (std::int64_t j = row(p.y_min); j <= row(p.y_max); ++j) {
-          for (std::int64_t i = column(p.x_min); i <= column(p.x_max); ++i) {
-            items[cursor[j * nx + i]++] = k;
-          }
+        const Span& s = spans[k];
+        for (std::int64_t j = s.j0; j <= s.j1; ++j) {
+          for (std::int64_t i = s.i0; i <= s.i1; ++i) items[cursor[j * nx + i]++] = k;
         }
       }
     }
@@ -235,9 +242,12 @@ class LoopChecker {
         for (auto v = u + 1; v != last && pieces_[*v].x_min <= p.x_max; ++v) {
           const Piece& q = pieces_[*v];
           if (q.y_min > p.y_max || p.y_min > q.y_max) continue;
-          if (row(std::max(p.y_min, q.y_min)) * nx + column(std::max(p.x_min, q.x_min)) != b) {
-            continue;
-          }
+          // A pair is looked at in one bucket only: the one holding the lower left corner of
+          // their boxes' overlap (row and column grow with y and x, so the larger of the two
+          // pieces' first rows and columns).
+          const Span& sp = spans[*u];
+          const Span& sq = spans[*v];
+          if (std::max(sp.j0, sq.j0) * nx + std::max(sp.i0, sq.i0) != b) continue;
           if (consecutive(p, q)) continue;
           if (pieces_meet(p, q)) return true;
         }
