@@ -7,39 +7,19 @@
 #include <tbb/global_control.h>
 
 #include <cstdint>
-#include <map>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "diagnose/exact_geometry.hpp"
+#include "sample_models.hpp"
 #include "strata/diagnose/diagnose_mesh.hpp"
-#include "strata/io/read_mesh.hpp"
-#include "strata/mesh/weld_vertices.hpp"
 
 namespace {
 
 using namespace strata;
 
-struct Model {
-  TriangleSoup soup;
-  IndexedMesh mesh;
-};
-
-const Model& model(const std::string& name) {
-  static std::map<std::string, Model> cache;
-  auto it = cache.find(name);
-  if (it == cache.end()) {
-    auto soup = io::read_mesh(std::string(STRATA_DATA_DIR) + "/" + name);
-    if (!soup) throw std::runtime_error(soup.error().to_string());
-    IndexedMesh mesh = weld_vertices(*soup);
-    it = cache.emplace(name, Model{std::move(*soup), std::move(mesh)}).first;
-  }
-  return it->second;
-}
-
 void diagnose(benchmark::State& state, const std::string& name) {
-  const Model& m = model(name);
+  const bench::SampleModel& m = bench::sample_model(name);
   const tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
                                     static_cast<std::size_t>(state.range(0)));
   diagnose::DiagnoseOptions options;  // as strata slice diagnoses
@@ -56,7 +36,7 @@ BENCHMARK(BM_DiagnoseRearCase)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->U
 
 /// Arg 0: exact_signed_volumes (the filter decides, or the integers); 1: the integers alone.
 void BM_SignedVolumesRearCase(benchmark::State& state) {
-  const IndexedMesh& mesh = model("real/rear_case.stl").mesh;
+  const IndexedMesh& mesh = bench::sample_model("real/rear_case.stl").mesh;
   const std::vector<std::uint32_t> group(mesh.triangles.size(), 0);
   const bool integers = state.range(0) == 1;
   for (auto _ : state) {

@@ -5,13 +5,11 @@
 #include <zlib.h>
 
 #include <cmath>
-#include <map>
 #include <numeric>
-#include <stdexcept>
 
 #include "export/grey_png_internal.hpp"
+#include "sample_models.hpp"
 #include "strata/io/read_mesh.hpp"
-#include "strata/mesh/weld_vertices.hpp"
 #include "strata/slice/slice_float.hpp"
 #include "strata/slicer/slice_model.hpp"
 #include "strata/voxel/boundary_shell.hpp"
@@ -20,16 +18,7 @@ namespace {
 
 using namespace strata;
 
-const IndexedMesh& model(const std::string& name) {
-  static std::map<std::string, IndexedMesh> cache;
-  auto it = cache.find(name);
-  if (it == cache.end()) {
-    auto soup = io::read_mesh(std::string(STRATA_DATA_DIR) + "/" + name);
-    if (!soup) throw std::runtime_error(soup.error().to_string());
-    it = cache.emplace(name, weld_vertices(*soup)).first;
-  }
-  return it->second;
-}
+const IndexedMesh& model(const std::string& name) { return bench::sample_model(name).mesh; }
 
 class NullSink final : public LayerSink {
  public:

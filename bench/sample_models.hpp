@@ -1,0 +1,33 @@
+#pragma once
+
+// The sample models of data/ the stage benchmarks run on, read and welded once a process.
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "strata/io/read_mesh.hpp"
+#include "strata/mesh/weld_vertices.hpp"
+
+namespace strata::bench {
+
+struct SampleModel {
+  TriangleSoup soup;  ///< as read (the diagnosis reads its stored normals)
+  IndexedMesh mesh;   ///< welded
+};
+
+/// The model at data/NAME, e.g. "real/rear_case.stl". Throws when it cannot be read.
+inline const SampleModel& sample_model(const std::string& name) {
+  static std::map<std::string, SampleModel> cache;
+  auto it = cache.find(name);
+  if (it == cache.end()) {
+    auto soup = io::read_mesh(std::string(STRATA_DATA_DIR) + "/" + name);
+    if (!soup) throw std::runtime_error(soup.error().to_string());
+    IndexedMesh mesh = weld_vertices(*soup);
+    it = cache.emplace(name, SampleModel{std::move(*soup), std::move(mesh)}).first;
+  }
+  return it->second;
+}
+
+}  // namespace strata::bench
