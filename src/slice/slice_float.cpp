@@ -20,20 +20,25 @@ std::uint32_t layers_at_or_below(const GridSpec& grid, double z) {
 }  // namespace
 
 FacetLayerRanges facet_layer_ranges(const IndexedMesh& mesh, const GridSpec& grid) {
+  // layers_at_or_below is monotone in z, so a facet's count at its lowest (highest) z is the
+  // least (greatest) of its vertices' counts: each vertex is searched once, not once per facet
+  // around it (six on a closed mesh).
+  std::vector<std::uint32_t> at_or_below(mesh.vertices.size());
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    at_or_below[v] = layers_at_or_below(grid, mesh.vertices[v].z);
+  }
   FacetLayerRanges ranges;
   const std::size_t n = mesh.triangles.size();
   ranges.first.resize(n);
   ranges.last.resize(n);
   for (std::size_t f = 0; f < n; ++f) {
     const auto& t = mesh.triangles[f];
-    const double z_a = mesh.vertices[t[0]].z;
-    const double z_b = mesh.vertices[t[1]].z;
-    const double z_c = mesh.vertices[t[2]].z;
-    const double z_min = std::min({z_a, z_b, z_c});
-    const double z_max = std::max({z_a, z_b, z_c});
+    const std::uint32_t a = at_or_below[t[0]];
+    const std::uint32_t b = at_or_below[t[1]];
+    const std::uint32_t c = at_or_below[t[2]];
     // Layer k is crossed iff z_min < zk <= z_max (a vertex on the plane counts as above).
-    const std::uint32_t first = layers_at_or_below(grid, z_min);
-    const std::uint32_t end = layers_at_or_below(grid, z_max);
+    const std::uint32_t first = std::min({a, b, c});
+    const std::uint32_t end = std::max({a, b, c});
     if (first < end) {
       ranges.first[f] = first;
       ranges.last[f] = end - 1;

@@ -137,6 +137,59 @@ TEST(FacetLayerRanges, CornersOnAndBesideEveryPlaneCountExactlyWhicheverWayTheGu
   EXPECT_GT(guesses_high, 0) << "no corner whose first guess is too high: the test lost its point";
 }
 
+TEST(FacetLayerRanges, SharedVerticesGiveEachFacetTheRangeOfItsOwnCorners) {
+  // Vertices shared by many facets, on planes, one ulp beside them and between them, with every
+  // corner order: each facet's range is that of its own lowest and highest corner, counted plane
+  // by plane here.
+  GridSpec g = four_layers();
+  g.z0 = 0.3;
+  g.dz = 0.1;
+  g.nz = 6;
+  IndexedMesh m;
+  for (std::uint32_t k = 0; k < g.nz; ++k) {
+    for (const double z :
+         {std::nextafter(g.zk(k), -1.0), g.zk(k), std::nextafter(g.zk(k), 2.0), g.zk(k) + 0.05}) {
+      m.vertices.push_back({static_cast<double>(m.vertices.size()), z * z, z});
+    }
+    // On the plane, just above it and between it and the next: above the plane, below the next.
+    const VertexIndex on = 4 * k + 1;
+    m.triangles.push_back({on, on + 1, on + 2});
+    m.triangles.push_back({on + 2, on, on + 1});
+  }
+  m.vertices.push_back({-1.0, 0.0, -5.0});  // below every plane
+  m.vertices.push_back({-2.0, 0.0, 5.0});   // above every plane
+  const auto nv = static_cast<VertexIndex>(m.vertices.size());
+  for (VertexIndex a = 0; a < nv; ++a) {
+    for (VertexIndex b = 0; b < nv; b += 3) {
+      m.triangles.push_back({a, b, (a + b + 1) % nv});
+      m.triangles.push_back({(a + 2 * b + 5) % nv, a, b});
+    }
+  }
+  const auto at_or_below = [&](double z) {
+    std::uint32_t count = 0;
+    while (count < g.nz && g.zk(count) <= z) ++count;
+    return count;
+  };
+  const FacetLayerRanges r = facet_layer_ranges(m, g);
+  ASSERT_EQ(r.first.size(), m.triangles.size());
+  int crossing = 0;
+  for (std::size_t f = 0; f < m.triangles.size(); ++f) {
+    const auto& t = m.triangles[f];
+    const double z0 = m.vertices[t[0]].z, z1 = m.vertices[t[1]].z, z2 = m.vertices[t[2]].z;
+    const std::uint32_t first = at_or_below(std::min({z0, z1, z2}));
+    const std::uint32_t end = at_or_below(std::max({z0, z1, z2}));
+    if (first < end) {
+      ++crossing;
+      EXPECT_EQ(r.first[f], first) << "facet " << f;
+      EXPECT_EQ(r.last[f], end - 1) << "facet " << f;
+    } else {
+      EXPECT_TRUE(crosses_none(r, f)) << "facet " << f;
+    }
+  }
+  EXPECT_GT(crossing, 0);
+  EXPECT_LT(crossing, static_cast<int>(m.triangles.size())) << "no facet between two planes";
+}
+
 TEST(BucketFacetsByFirstLayer, GroupsFacetsByTheirFirstLayerInFacetOrder) {
   FacetLayerRanges r;
   // Facets 0..4: first layers 2, none, 0, 2, 3.
