@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <iterator>
+#include <memory>
 #include <numeric>
 #include <span>
 #include <string>
@@ -236,11 +237,30 @@ void sort_few(Iterator first, Iterator last, Less less = {}) {
   }
 }
 
-/// The edge uses of every facet not in `skip` (zero-length edges left out), sorted by edge and
-/// then facet. A counting sort by the lower vertex, then a sort of each vertex's few uses by
-/// (hi, facet, forward): linear but for those small sorts, and no copy of the uses.
-std::vector<EdgeUse> collect_edge_uses(const IndexedMesh& mesh, const std::vector<bool>& skip) {
-  ByVertex<EdgeUse> by_lo = sort_by_vertex<EdgeUse>(
+/// Each vertex's uses of the edges to higher vertices, one word a use: hi << 32 | facet << 1 |
+/// forward, so that sorting the words sorts them by (hi, facet, forward). The lower vertex is the
+/// group the word is in: half the memory of the four fields.
+struct EdgeUses {
+  std::vector<std::size_t> start;  ///< the uses of lower vertex v: words[start[v] .. start[v + 1])
+  std::vector<std::uint64_t> words;
+
+  static std::uint64_t word(VertexIndex hi, FacetIndex facet, bool forward) {
+    return std::uint64_t{hi} << 32 | std::uint64_t{facet} << 1 | (forward ? 1U : 0U);
+  }
+  static VertexIndex hi_of(std::uint64_t word) { return static_cast<VertexIndex>(word >> 32); }
+  static FacetIndex facet_of(std::uint64_t word) {
+    return static_cast<FacetIndex>((word & 0xFFFFFFFFU) >> 1);
+  }
+  static EdgeUse use(VertexIndex lo, std::uint64_t word) {
+    return {lo, hi_of(word), facet_of(word), (word & 1U) != 0};
+  }
+};
+
+/// The edge uses of every facet not in `skip` (zero-length edges left out), grouped by lower
+/// vertex and sorted by edge and then facet. A counting sort by the lower vertex, then a sort of
+/// each vertex's few uses: linear but for those small sorts, and no copy of the uses.
+EdgeUses collect_edge_uses(const IndexedMesh& mesh, const std::vector<bool>& skip) {
+  ByVertex<std::uint64_t> by_lo = sort_by_vertex<std::uint64_t>(
       mesh.vertices.size(), mesh.triangles.size(), [&](std::size_t f, auto&& visit) {
         if (skip[f]) return;
         const auto& t = mesh.triangles[f];
@@ -248,24 +268,39 @@ std::vector<EdgeUse> collect_edge_uses(const IndexedMesh& mesh, const std::vecto
           const VertexIndex a = t[c];
           const VertexIndex b = t[(c + 1) % 3];
           if (a == b) continue;  // a zero-length edge joins nothing
-          const EdgeUse use{std::min(a, b), std::max(a, b), static_cast<FacetIndex>(f), a < b};
-          visit(use.lo, use);
+          visit(std::min(a, b), EdgeUses::word(std::max(a, b), static_cast<FacetIndex>(f), a < b));
         }
       });
-  std::vector<EdgeUse>& uses = by_lo.items;
-  const std::vector<std::size_t>& start = by_lo.start;
-  const auto by_hi_facet = [](const EdgeUse& x, const EdgeUse& y) {
-    return std::tie(x.hi, x.facet, x.forward) < std::tie(y.hi, y.facet, y.forward);
-  };
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.vertices.size(), 4096),
-                    [&](const auto& range) {
-                      for (std::size_t v = range.begin(); v < range.end(); ++v) {
-                        const auto first = uses.begin() + static_cast<std::ptrdiff_t>(start[v]);
-                        const auto last = uses.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
-                        sort_few(first, last, by_hi_facet);
-                      }
-                    });
-  return std::move(uses);
+  EdgeUses uses{std::move(by_lo.start), std::move(by_lo.items)};
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, mesh.vertices.size(), 4096), [&](const auto& range) {
+        for (std::size_t v = range.begin(); v < range.end(); ++v) {
+          sort_few(uses.words.begin() + static_cast<std::ptrdiff_t>(uses.start[v]),
+                   uses.words.begin() + static_cast<std::ptrdiff_t>(uses.start[v + 1]));
+        }
+      });
+  return uses;
+}
+
+/// Calls visit(first use, uses, forward uses) for each edge of `all`, in order of (lo, hi);
+/// the first use is the lowest facet's.
+template <class Visit>
+void visit_edges(const EdgeUses& all, const Visit& visit) {
+  const std::size_t nv = all.start.size() - 1;
+  for (std::size_t lo = 0; lo < nv; ++lo) {
+    const std::size_t stop = all.start[lo + 1];
+    for (std::size_t begin = all.start[lo]; begin < stop;) {
+      const std::uint64_t first = all.words[begin];
+      std::size_t end = begin + 1;
+      std::size_t forward = first & 1U;
+      while (end < stop && EdgeUses::hi_of(all.words[end]) == EdgeUses::hi_of(first)) {
+        forward += all.words[end] & 1U;
+        ++end;
+      }
+      visit(EdgeUses::use(static_cast<VertexIndex>(lo), first), end - begin, forward);
+      begin = end;
+    }
+  }
 }
 
 double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -519,7 +554,7 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
   for (const auto& t : mesh.triangles) {
     STRATA_ASSERT(t[0] < nv && t[1] < nv && t[2] < nv, "facet refers to a missing vertex");
   }
-  STRATA_ASSERT(nf <= 0xFFFFFFFFU, "facet indices are 32-bit");
+  STRATA_ASSERT(nf <= 0x7FFFFFFFU, "facet indices are 31-bit (an edge use packs one with a bit)");
 
   MeshReport report;
   report.num_input_facets = soup.triangles.size();
@@ -530,25 +565,29 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
   // ---- facets: degenerate, area, duplicates
   std::vector<bool> degenerate(nf, false);
   {
-    // The predicate runs in parallel; the area is summed in facet order, one result.
-    std::vector<std::uint8_t> flat(nf, 0);
+    // The predicate and the facets' areas run in parallel; the areas are summed in facet order,
+    // one result. A degenerate facet's is -1 (an area is +0 or more, or NaN on overflow): it is not
+    // summed.
+    const auto area_of = std::make_unique_for_overwrite<double[]>(nf);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nf, 4096), [&](const auto& range) {
       for (std::size_t f = range.begin(); f < range.end(); ++f) {
         const auto& t = mesh.triangles[f];
-        flat[f] =
-            t[0] == t[1] || t[1] == t[2] || t[2] == t[0] ||
-            detail::is_collinear(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+        const Vec3& a = mesh.vertices[t[0]];
+        const Vec3& b = mesh.vertices[t[1]];
+        const Vec3& c = mesh.vertices[t[2]];
+        const bool flat =
+            t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || detail::is_collinear(a, b, c);
+        area_of[f] = flat ? -1.0 : triangle_area(a, b, c);
       }
     });
     FirstOccurrences<FacetIndex> found{limit};
     double area = 0.0;
     for (std::size_t f = 0; f < nf; ++f) {
-      const auto& t = mesh.triangles[f];
-      if (flat[f] != 0) {
+      if (area_of[f] < 0.0) {
         degenerate[f] = true;
         found.add(f, static_cast<FacetIndex>(f));
       } else {
-        area += triangle_area(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+        area += area_of[f];
       }
     }
     report.degenerate_facets = found.finish();
@@ -561,11 +600,14 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
     // The reported topology is that of the facets with area: a zero-area facet bounds nothing, and
     // repair tools drop it first. The balance that decides whether the winding number is defined
     // takes every facet, since zero-area facets can seal cracks (T-junctions) for the slicer.
-    const std::vector<EdgeUse> uses = collect_edge_uses(mesh, degenerate);
+    const EdgeUses uses = collect_edge_uses(mesh, degenerate);
     UnionFind facet_sets(nf);
-    for (std::size_t s = 1; s < uses.size(); ++s) {
-      if (uses[s].lo == uses[s - 1].lo && uses[s].hi == uses[s - 1].hi) {
-        facet_sets.unite(uses[s].facet, uses[s - 1].facet);
+    for (std::size_t lo = 0; lo < nv; ++lo) {
+      for (std::size_t s = uses.start[lo] + 1; s < uses.start[lo + 1]; ++s) {
+        const std::uint64_t here = uses.words[s], before = uses.words[s - 1];
+        if (EdgeUses::hi_of(here) == EdgeUses::hi_of(before)) {
+          facet_sets.unite(EdgeUses::facet_of(here), EdgeUses::facet_of(before));
+        }
       }
     }
     constexpr std::uint32_t kNone = 0xFFFFFFFFU;
@@ -586,39 +628,18 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
       shell_of_facet[f] = shell_of_root[root];
       ++shells[shell_of_facet[f]].num_facets;
     }
-    const auto edge_groups = [](const std::vector<EdgeUse>& all, auto&& visit) {
-      for (std::size_t begin = 0; begin < all.size();) {
-        std::size_t end = begin + 1;
-        while (end < all.size() && all[end].lo == all[begin].lo && all[end].hi == all[begin].hi) {
-          ++end;
-        }
-        std::size_t forward = 0;
-        for (std::size_t s = begin; s < end; ++s) forward += all[s].forward ? 1 : 0;
-        visit(all[begin], end - begin, forward);
-        begin = end;
-      }
-    };
     const auto& v = mesh.vertices;
     const auto as_run = [&v](const EdgeUse& use) {
       return use.forward ? EdgeLocation{v[use.lo], v[use.hi]} : EdgeLocation{v[use.hi], v[use.lo]};
     };
     {
       FirstOccurrences<EdgeLocation> unbalanced{limit};
-      const auto visit = [&](const EdgeUse& first, std::size_t n, std::size_t forward) {
+      const auto find_unbalanced = [&](const EdgeUse& first, std::size_t n, std::size_t forward) {
         if (2 * forward != n) unbalanced.add(first.facet, as_run(first));
       };
-      // Without degenerate facets every facet's uses are those already collected.
-      if (report.degenerate_facets.empty()) {
-        edge_groups(uses, visit);
-      } else {
-        edge_groups(collect_edge_uses(mesh, std::vector<bool>(nf, false)), visit);
-      }
-      report.unbalanced_edges = unbalanced.finish();
-    }
-    {
       FirstOccurrences<EdgeLocation> boundary{limit}, non_manifold{limit}, inconsistent{limit};
       std::vector<std::pair<VertexIndex, VertexIndex>> boundary_pairs;
-      edge_groups(uses, [&](const EdgeUse& first, std::size_t n, std::size_t forward) {
+      const auto judge_edge = [&](const EdgeUse& first, std::size_t n, std::size_t forward) {
         // `first` is the use by the lowest facet.
         ShellReport& shell = shells[shell_of_facet[first.facet]];
         if (n == 1) {
@@ -629,7 +650,18 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
         if (n == 2 && forward != 1) inconsistent.add(first.facet, as_run(first));
         if (2 * forward != n) shell.is_balanced = false;
         if (n % 2 == 1) shell.is_closed = false;
-      });
+      };
+      if (report.degenerate_facets.empty()) {
+        // Without degenerate facets every facet's uses are those already collected: one pass.
+        visit_edges(uses, [&](const EdgeUse& first, std::size_t n, std::size_t forward) {
+          find_unbalanced(first, n, forward);
+          judge_edge(first, n, forward);
+        });
+      } else {
+        visit_edges(collect_edge_uses(mesh, std::vector<bool>(nf, false)), find_unbalanced);
+        visit_edges(uses, judge_edge);
+      }
+      report.unbalanced_edges = unbalanced.finish();
       report.boundary_edges = boundary.finish();
       report.non_manifold_edges = non_manifold.finish();
       report.inconsistent_edges = inconsistent.finish();
@@ -661,19 +693,26 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
       const detail::ExactVolumes volumes =
           detail::exact_signed_volumes(mesh, shell_of_facet, shells.size());
       report.volume_mm3 = volumes.total_mm3;
-      std::vector<Bbox3> shell_bounds(shells.size());
-      for (std::size_t f = 0; f < nf; ++f) {
-        if (shell_of_facet[f] == kNone) continue;
-        for (VertexIndex x : mesh.triangles[f])
-          shell_bounds[shell_of_facet[f]].add(mesh.vertices[x]);
-      }
       std::vector<std::size_t> positive;
+      bool any_negative = false;
       for (std::size_t s = 0; s < shells.size(); ++s) {
         ShellReport& shell = shells[s];
         shell.signed_volume_mm3 = volumes.by_group_mm3[s];
         shell.is_balanced = shell.is_balanced && shell.is_closed;
         if (shell.is_closed) ++report.num_closed_shells;
         if (shell.is_balanced && shell.signed_volume_mm3 > 0.0) positive.push_back(s);
+        if (shell.is_balanced && shell.signed_volume_mm3 < 0.0) any_negative = true;
+      }
+      // The shells' boxes serve the negative shells below alone: a mesh without one, as most
+      // are, is spared a pass over every facet's corners.
+      std::vector<Bbox3> shell_bounds;
+      if (any_negative) {
+        shell_bounds.resize(shells.size());
+        for (std::size_t f = 0; f < nf; ++f) {
+          if (shell_of_facet[f] == kNone) continue;
+          for (VertexIndex x : mesh.triangles[f])
+            shell_bounds[shell_of_facet[f]].add(mesh.vertices[x]);
+        }
       }
       // A negative shell inside a positive one is the inner wall of a hollow part; the bounding
       // boxes decide, and the comparisons are capped for meshes made of very many shells.
