@@ -9,13 +9,16 @@
 namespace strata::detail {
 
 FastKernel::FastKernel(const IndexedMesh& mesh, const GridSpec& grid, const SliceOptions& options)
-    : mesh_(mesh),
-      grid_(grid),
-      options_(options),
-      ranges_(facet_layer_ranges(mesh, grid)),
-      buckets_(bucket_facets_by_first_layer(ranges_, grid.nz)) {}
+    : mesh_(mesh), grid_(grid), options_(options) {}
 
 void FastKernel::prepare_batch(std::uint32_t k0, std::uint32_t k1) {
+  if (!grouped_) {
+    // On the first batch, not in the constructor: the run builds the shell's marker beside the
+    // first batch, and this grouping, on one thread, then overlaps the marker's set-up.
+    ranges_ = facet_layer_ranges(mesh_, grid_);
+    buckets_ = bucket_facets_by_first_layer(ranges_, grid_.nz);
+    grouped_ = true;
+  }
   advance_active_facets(buckets_.offsets, buckets_.facets, ranges_.last, k0, k1, scanned_, active_);
 }
 
