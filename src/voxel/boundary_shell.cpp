@@ -11,6 +11,7 @@
 #include <deque>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <span>
 
@@ -289,22 +290,43 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
   });
   // Ties by index, so that the parallel sort gives one order.
   tbb::parallel_sort(by_patch.get(), by_patch.get() + nf);
-  std::vector<Patch> patches;
-  for (std::size_t r = 0; r < nf;) {
-    Patch patch;
-    patch.begin = static_cast<std::uint32_t>(r);
-    const std::uint64_t key = by_patch[r].first;
-    while (r < nf && by_patch[r].first == key) ++r;
-    patch.end = static_cast<std::uint32_t>(r);
-    patches.push_back(patch);
+  // A patch begins where the key changes. The sorted keys are cut into blocks that count their
+  // beginnings, then number them from the count of the blocks before: in parallel, one result.
+  const auto begins_patch = [&](std::size_t r) {
+    return r == 0 || by_patch[r].first != by_patch[r - 1].first;
+  };
+  constexpr std::size_t kBlock = std::size_t{1} << 16;
+  const std::size_t blocks = (nf + kBlock - 1) / kBlock;
+  const auto rows_of = [&](std::size_t block) {
+    return std::pair{block * kBlock, std::min(nf, (block + 1) * kBlock)};
+  };
+  std::vector<std::uint32_t> patches_before(blocks + 1, 0);
+  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t block) {
+    const auto [first, last] = rows_of(block);
+    std::uint32_t count = 0;
+    for (std::size_t r = first; r < last; ++r) count += begins_patch(r) ? 1 : 0;
+    patches_before[block + 1] = count;
+  });
+  std::partial_sum(patches_before.begin(), patches_before.end(), patches_before.begin());
+  std::vector<Patch> patches(patches_before[blocks]);
+  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t block) {
+    const auto [first, last] = rows_of(block);
+    std::uint32_t q = patches_before[block];
+    for (std::size_t r = first; r < last; ++r) {
+      if (begins_patch(r)) patches[q++].begin = static_cast<std::uint32_t>(r);
+    }
+  });
+  for (std::size_t q = 0; q < patches.size(); ++q) {
+    patches[q].end = q + 1 < patches.size() ? patches[q + 1].begin : static_cast<std::uint32_t>(nf);
   }
   // The facets in patch order, and their vertices copied in the order these facets first use
   // them: the layers read both in sequence rather than gathering corners from across the mesh
   // (a vertex load missed the cache in most facets of a large mesh). A vertex's first use is the
   // least of its corner positions 3 r + corner, found in parallel; the numbering then takes one
   // pass over the positions that are first uses.
-  reserve_huge_pages(triangles_by_patch_, nf);
-  triangles_by_patch_.resize(nf);
+  // Written whole below, by the threads: not zeroed on one thread first.
+  triangles_by_patch_ = std::make_unique_for_overwrite<std::array<VertexIndex, 3>[]>(nf);
+  advise_huge_pages(triangles_by_patch_.get(), nf * sizeof(std::array<VertexIndex, 3>));
   constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
   STRATA_ASSERT(3 * nf < kUnused, "corner positions are numbered in 32 bits");
   std::vector<std::atomic<std::uint32_t>> first_use(mesh_.vertices.size());
@@ -387,7 +409,7 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
     }
     // A patch's slab serves every layer: the facets a layer tests are some of the patch's.
     patch.slab =
-        slab_of(std::span(triangles_by_patch_).subspan(patch.begin, patch.end - patch.begin),
+        slab_of(std::span(triangles_by_patch_.get() + patch.begin, patch.end - patch.begin),
                 vertices_by_patch_);
   });
   std::sort(patches.begin(), patches.end(), [](const Patch& a, const Patch& b) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -150,7 +151,9 @@ class BoundaryShell {
     double zmin = 0.0, zmax = 0.0;
     Slab slab;
   };
-  std::vector<std::array<VertexIndex, 3>> triangles_by_patch_;  ///< into vertices_by_patch_
+  /// The facets in patch order, into vertices_by_patch_ (an array: filled by the threads, not
+  /// zeroed first).
+  std::unique_ptr<std::array<VertexIndex, 3>[]> triangles_by_patch_;
   std::vector<Vec3> vertices_by_patch_;  ///< the mesh's vertices in the order patches use them
   std::vector<Patch> patches_;
   std::vector<double> zmin_sorted_;
