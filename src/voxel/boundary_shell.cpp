@@ -295,7 +295,7 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
   const auto begins_patch = [&](std::size_t r) {
     return r == 0 || by_patch[r].first != by_patch[r - 1].first;
   };
-  constexpr std::size_t kBlock = std::size_t{1} << 16;
+  constexpr std::size_t kBlock = 256;  // small: the tests' meshes span several blocks
   const std::size_t blocks = (nf + kBlock - 1) / kBlock;
   const auto rows_of = [&](std::size_t block) {
     return std::pair{block * kBlock, std::min(nf, (block + 1) * kBlock)};
