@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
-#include <limits>
 #include <new>
 
 #include "contour/chain_segments.hpp"
@@ -22,21 +21,6 @@
 namespace strata {
 namespace exact::detail {
 namespace {
-
-/// The number of layers whose plane zk satisfies zk <= z (zk grows with k).
-std::uint32_t layers_at_or_below(const GridSpec& grid, double z) {
-  std::uint32_t lo = 0;
-  std::uint32_t hi = grid.nz;
-  while (lo < hi) {
-    const std::uint32_t mid = lo + (hi - lo) / 2;
-    if (grid.zk(mid) <= z) {
-      lo = mid + 1;
-    } else {
-      hi = mid;
-    }
-  }
-  return lo;
-}
 
 /// The exact crossing points of a layer as a LoopChecker geometry: the rounded points, within
 /// half an ulp of the exact ones, filter; the rationals decide.
@@ -125,50 +109,22 @@ ExactKernel::ExactKernel(const IndexedMesh& mesh, const GridSpec& grid, const Sl
 }
 
 void ExactKernel::index_facets_by_layer() {
-  // Facet f crosses layer k iff zmin(f) < zk <= zmax(f) (a vertex on the plane is above it).
-  const IndexedMesh& mesh = mesh_;
-  const GridSpec& grid = grid_;
-  const std::size_t n = mesh.triangles.size();
-  first_layer_.resize(n);
-  last_layer_.resize(n);
-  bucket_offsets_.assign(std::size_t{grid.nz} + 1, 0);
-  for (std::size_t f = 0; f < n; ++f) {
-    const FacetIndex fi = static_cast<FacetIndex>(f);
-    const double z_min =
-        std::min({mesh.corner(fi, 0).z, mesh.corner(fi, 1).z, mesh.corner(fi, 2).z});
-    const double z_max =
-        std::max({mesh.corner(fi, 0).z, mesh.corner(fi, 1).z, mesh.corner(fi, 2).z});
-    const std::uint32_t first = layers_at_or_below(grid, z_min);
-    const std::uint32_t end = layers_at_or_below(grid, z_max);
-    if (first < end) {
-      first_layer_[f] = first;
-      last_layer_[f] = end - 1;
-      ++bucket_offsets_[first + 1];
-    } else {
-      first_layer_[f] = std::numeric_limits<std::uint32_t>::max();
-      last_layer_[f] = 0;
-    }
-  }
-  for (std::uint32_t k = 0; k < grid.nz; ++k) bucket_offsets_[k + 1] += bucket_offsets_[k];
-  bucket_facets_.resize(bucket_offsets_[grid.nz]);
-  std::vector<std::uint32_t> cursor(bucket_offsets_.begin(), bucket_offsets_.end() - 1);
-  for (std::size_t f = 0; f < n; ++f) {
-    if (first_layer_[f] <= last_layer_[f]) {
-      bucket_facets_[cursor[first_layer_[f]]++] = static_cast<FacetIndex>(f);
-    }
-  }
+  // The fast path's grouping: facet f crosses layer k iff zmin(f) < zk <= zmax(f) (a vertex on
+  // the plane is above it), decided on the double planes, which are the same on both paths.
+  ranges_ = facet_layer_ranges(mesh_, grid_);
+  buckets_ = bucket_facets_by_first_layer(ranges_, grid_.nz);
 }
 
 ExactKernel::~ExactKernel() = default;
 
 void ExactKernel::prepare_batch(std::uint32_t k0, std::uint32_t k1) {
-  advance_active_facets(bucket_offsets_, bucket_facets_, last_layer_, k0, k1, scanned_, active_);
+  advance_active_facets(buckets_.offsets, buckets_.facets, ranges_.last, k0, k1, scanned_, active_);
 }
 
 LayerGeometry ExactKernel::compute_layer(std::uint32_t k) const {
   std::vector<FacetIndex> candidates;
   for (const FacetIndex f : active_) {
-    if (first_layer_[f] <= k && k <= last_layer_[f]) candidates.push_back(f);
+    if (ranges_.first[f] <= k && k <= ranges_.last[f]) candidates.push_back(f);
   }
   std::sort(candidates.begin(), candidates.end());
   const double z = grid_.zk(k);

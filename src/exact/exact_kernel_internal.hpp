@@ -11,6 +11,7 @@
 #include "strata/mesh/indexed_mesh.hpp"
 #include "strata/pipeline/layer_kernel.hpp"
 #include "strata/slice/grid_spec.hpp"
+#include "strata/slice/slice_float.hpp"
 #include "strata/slice/slice_options.hpp"
 
 namespace strata::exact::detail {
@@ -47,7 +48,7 @@ class ExactKernel final : public LayerKernel {
   ExactSliceReport report() const;
 
  private:
-  /// Fills first_layer_, last_layer_ and the facets' buckets by first layer.
+  /// Fills ranges_ and buckets_.
   void index_facets_by_layer();
 
   const IndexedMesh& mesh_;
@@ -56,10 +57,8 @@ class ExactKernel final : public LayerKernel {
   ContourMethod method_;
   std::unique_ptr<SoupMesh> soup_;
   std::vector<std::int8_t> normal_x_signs_;
-  std::vector<std::uint32_t> first_layer_;  ///< per facet; > last_layer_ when it crosses none
-  std::vector<std::uint32_t> last_layer_;
-  std::vector<std::uint32_t> bucket_offsets_;  ///< facets by first layer (CSR), nz + 1 entries
-  std::vector<FacetIndex> bucket_facets_;
+  FacetLayerRanges ranges_;  ///< per facet; first > last when it crosses none
+  FacetBuckets buckets_;     ///< facets by first layer
   std::vector<FacetIndex> active_;
   std::uint32_t scanned_ = 0;  ///< layers whose buckets the sweep has read
   mutable std::atomic<std::uint32_t> halfedge_layers_{0};
