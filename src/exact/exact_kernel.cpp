@@ -104,29 +104,17 @@ ExactKernel::ExactKernel(const IndexedMesh& mesh, const GridSpec& grid, const Sl
   tbb::parallel_invoke([&] { soup_ = std::make_unique<SoupMesh>(mesh); },
                        [&] {
                          normal_x_signs_ = facet_normal_x_signs(mesh);
-                         index_facets_by_layer();
+                         // The fast path's grouping: the double planes are the same on both.
+                         sweep_.group(mesh, grid);
                        });
-}
-
-void ExactKernel::index_facets_by_layer() {
-  // The fast path's grouping: facet f crosses layer k iff zmin(f) < zk <= zmax(f) (a vertex on
-  // the plane is above it), decided on the double planes, which are the same on both paths.
-  ranges_ = facet_layer_ranges(mesh_, grid_);
-  buckets_ = bucket_facets_by_first_layer(ranges_, grid_.nz);
 }
 
 ExactKernel::~ExactKernel() = default;
 
-void ExactKernel::prepare_batch(std::uint32_t k0, std::uint32_t k1) {
-  advance_active_facets(buckets_.offsets, buckets_.facets, ranges_.last, k0, k1, scanned_, active_);
-}
+void ExactKernel::prepare_batch(std::uint32_t k0, std::uint32_t k1) { sweep_.advance(k0, k1); }
 
 LayerGeometry ExactKernel::compute_layer(std::uint32_t k) const {
-  std::vector<FacetIndex> candidates;
-  for (const FacetIndex f : active_) {
-    if (ranges_.first[f] <= k && k <= ranges_.last[f]) candidates.push_back(f);
-  }
-  std::sort(candidates.begin(), candidates.end());
+  const std::vector<FacetIndex> candidates = sweep_.candidates(k);
   const double z = grid_.zk(k);
   ExactLayer layer = cut_layer(mesh_, candidates, normal_x_signs_, k, z);
 

@@ -48,19 +48,13 @@ class ExactKernel final : public LayerKernel {
   ExactSliceReport report() const;
 
  private:
-  /// Fills ranges_ and buckets_.
-  void index_facets_by_layer();
-
   const IndexedMesh& mesh_;
   GridSpec grid_;
   SliceOptions options_;
   ContourMethod method_;
   std::unique_ptr<SoupMesh> soup_;
   std::vector<std::int8_t> normal_x_signs_;
-  FacetLayerRanges ranges_;  ///< per facet; first > last when it crosses none
-  FacetBuckets buckets_;     ///< facets by first layer
-  std::vector<FacetIndex> active_;
-  std::uint32_t scanned_ = 0;  ///< layers whose buckets the sweep has read
+  FacetSweep sweep_;
   mutable std::atomic<std::uint32_t> halfedge_layers_{0};
   mutable std::atomic<std::uint32_t> arrangement_layers_{0};
   mutable std::atomic<std::uint32_t> empty_layers_{0};

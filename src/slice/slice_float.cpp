@@ -83,6 +83,27 @@ void advance_active_facets(std::span<const std::uint32_t> offsets,
   scanned = std::max(scanned, end);
 }
 
+void FacetSweep::group(const IndexedMesh& mesh, const GridSpec& grid) {
+  ranges_ = facet_layer_ranges(mesh, grid);
+  buckets_ = bucket_facets_by_first_layer(ranges_, grid.nz);
+  active_.clear();
+  scanned_ = 0;
+}
+
+void FacetSweep::advance(std::uint32_t k0, std::uint32_t k1) {
+  advance_active_facets(buckets_.offsets, buckets_.facets, ranges_.last, k0, k1, scanned_, active_);
+}
+
+std::vector<FacetIndex> FacetSweep::candidates(std::uint32_t k) const {
+  std::vector<FacetIndex> out;
+  out.reserve(active_.size());
+  for (const FacetIndex f : active_) {
+    if (ranges_.first[f] <= k && k <= ranges_.last[f]) out.push_back(f);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 LayerSegments slice_layer(const IndexedMesh& mesh, std::span<const FacetIndex> candidates,
                           const GridSpec& grid, std::uint32_t layer) {
   LayerSegments out;

@@ -12,24 +12,16 @@ FastKernel::FastKernel(const IndexedMesh& mesh, const GridSpec& grid, const Slic
     : mesh_(mesh), grid_(grid), options_(options) {}
 
 void FastKernel::prepare_batch(std::uint32_t k0, std::uint32_t k1) {
-  if (!grouped_) {
+  if (!sweep_.grouped()) {
     // On the first batch, not in the constructor: the run builds the shell's marker beside the
     // first batch, and this grouping, on one thread, then overlaps the marker's set-up.
-    ranges_ = facet_layer_ranges(mesh_, grid_);
-    buckets_ = bucket_facets_by_first_layer(ranges_, grid_.nz);
-    grouped_ = true;
+    sweep_.group(mesh_, grid_);
   }
-  advance_active_facets(buckets_.offsets, buckets_.facets, ranges_.last, k0, k1, scanned_, active_);
+  sweep_.advance(k0, k1);
 }
 
 LayerGeometry FastKernel::compute_layer(std::uint32_t k) const {
-  std::vector<FacetIndex> candidates;
-  candidates.reserve(active_.size());
-  for (const FacetIndex f : active_) {
-    if (ranges_.first[f] <= k && k <= ranges_.last[f]) candidates.push_back(f);
-  }
-  // Facet order keeps every later step independent of the order of the sweep.
-  std::sort(candidates.begin(), candidates.end());
+  const std::vector<FacetIndex> candidates = sweep_.candidates(k);
   const LayerSegments segments = slice_layer(mesh_, candidates, grid_, k);
   LayerGeometry geometry;
   geometry.segments = static_cast<std::uint32_t>(segments.segments.size());

@@ -31,11 +31,7 @@ class FastKernel final : public LayerKernel {
   const IndexedMesh& mesh_;
   GridSpec grid_;
   SliceOptions options_;
-  FacetLayerRanges ranges_;  ///< set by the first prepare_batch, with buckets_
-  FacetBuckets buckets_;
-  bool grouped_ = false;
-  std::vector<FacetIndex> active_;  ///< facets whose layer range meets the current batch
-  std::uint32_t scanned_ = 0;       ///< layers whose buckets the sweep has read
+  FacetSweep sweep_;  ///< grouped by the first prepare_batch
   bool cells_wanted_ = true;
 };
 

@@ -50,21 +50,14 @@ WindingKernel::WindingKernel(const IndexedMesh& mesh, const GridSpec& grid,
     : caps_(winding::cap_boundary(mesh)),
       cap_tree_(cap_triangles(caps_)),
       grid_(grid),
-      options_(options),
-      ranges_(facet_layer_ranges(caps_.closed, grid)),
-      buckets_(bucket_facets_by_first_layer(ranges_, grid.nz)) {}
-
-void WindingKernel::prepare_batch(std::uint32_t k0, std::uint32_t k1) {
-  advance_active_facets(buckets_.offsets, buckets_.facets, ranges_.last, k0, k1, scanned_, active_);
+      options_(options) {
+  sweep_.group(caps_.closed, grid);
 }
 
+void WindingKernel::prepare_batch(std::uint32_t k0, std::uint32_t k1) { sweep_.advance(k0, k1); }
+
 LayerGeometry WindingKernel::compute_layer(std::uint32_t k) const {
-  std::vector<FacetIndex> candidates;
-  candidates.reserve(active_.size());
-  for (const FacetIndex f : active_) {
-    if (ranges_.first[f] <= k && k <= ranges_.last[f]) candidates.push_back(f);
-  }
-  std::sort(candidates.begin(), candidates.end());
+  const std::vector<FacetIndex> candidates = sweep_.candidates(k);
   const LayerSegments closed = slice_layer(caps_.closed, candidates, grid_, k);
   const std::vector<std::int32_t> integer =
       scanline_winding_numbers(caps_.closed, closed, grid_, options_.scan_offset_mm);

@@ -47,10 +47,7 @@ class WindingKernel final : public LayerKernel {
   winding::WindingNumberTree cap_tree_;
   GridSpec grid_;
   SliceOptions options_;
-  FacetLayerRanges ranges_;
-  FacetBuckets buckets_;
-  std::vector<FacetIndex> active_;
-  std::uint32_t scanned_ = 0;  ///< layers whose buckets the sweep has read
+  FacetSweep sweep_;  ///< over the capped mesh
   mutable std::atomic<std::uint64_t> guard_evaluations_{0};
 };
 
