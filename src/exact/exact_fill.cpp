@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "exact/exact_fill_internal.hpp"
+#include "predicates/filtered_sign.hpp"
+#include "predicates/grid_search.hpp"
 #include "strata/core/error.hpp"
 
 namespace strata::exact::detail {
@@ -139,6 +141,59 @@ class RowCrossings {
   mpfr_t num_, den_, quotient_;
 };
 
+/// The same crossings in doubles with a rigorous bound on their error (ErrorBoundedDouble): an
+/// interval holding the exact x, enough to count the cells left of it when no cell centre lies
+/// inside. Where one does, the exact crossing decides (RowCrossings).
+class RowCrossingBounds {
+ public:
+  /// The facet abc at height z; false when the sign of n.x is not certain in doubles (then no
+  /// row of the facet is decided here).
+  bool start(const Vec3& a, const Vec3& b, const Vec3& c, double z) {
+    using E = strata::detail::ErrorBoundedDouble;
+    const E d1 = E(b.y) - E(a.y);
+    const E d2 = E(c.z) - E(a.z);
+    const E d3 = E(b.z) - E(a.z);
+    const E d4 = E(c.y) - E(a.y);
+    const E d5 = E(b.x) - E(a.x);
+    const E d6 = E(c.x) - E(a.x);
+    nx_ = d1 * d2 - d3 * d4;
+    ny_ = d3 * d6 - d5 * d2;
+    const E nz = d5 * d4 - d1 * d6;
+    rest_ = nz * (E(z) - E(a.z));
+    ax_ = a.x;
+    ay_ = a.y;
+    // n.x far from zero against its error: the quotient's bound below stays small and finite.
+    return std::fabs(nx_.v) > 4.0 * nx_.e + strata::detail::kUnderflowSlack;
+  }
+
+  /// Doubles lo < hi with the exact crossing of row y strictly between them.
+  void bounds(double y, double& lo, double& hi) const {
+    using E = strata::detail::ErrorBoundedDouble;
+    using strata::detail::kUnderflowSlack;
+    using strata::detail::kUnitRoundoff;
+    // x = a.x - (n.y (y - a.y) + n.z (z - a.z)) / n.x
+    const E num = ny_ * (E(y) - E(ay_)) + rest_;
+    const double q = num.v / nx_.v;
+    // |N/D - N'/D'| <= (|N - N'| + |N'/D'| |D - D'|) / (|D'| - |D - D'|), and the division's own
+    // rounding; |N'/D'| <= |q| (1 + u).
+    const double abs_q = std::fabs(q) * (1.0 + 2.0 * kUnitRoundoff);
+    const double q_error = (num.e + abs_q * nx_.e) / (std::fabs(nx_.v) - nx_.e) +
+                           abs_q * kUnitRoundoff + kUnderflowSlack;
+    const double x = ax_ - q;
+    const double error = q_error + std::fabs(x) * kUnitRoundoff;
+    // The bound was itself computed in doubles: inflated so its own rounding cannot shrink it,
+    // and one step past each rounded end.
+    const double bound = error * (1.0 + 0x1p-40) + kUnderflowSlack;
+    lo = std::nextafter(x - bound, -HUGE_VAL);
+    hi = std::nextafter(x + bound, HUGE_VAL);
+  }
+
+ private:
+  strata::detail::ErrorBoundedDouble nx_, ny_, rest_;
+  double ax_ = 0.0;
+  double ay_ = 0.0;
+};
+
 /// Counts the comparisons of an exact value with a double that the nearest double left tied.
 class TieCounter {
  public:
@@ -163,9 +218,10 @@ bool is_inside(FillRule rule, long long winding, long long count) {
   return rule == FillRule::EvenOdd ? (count & 1) != 0 : winding != 0;
 }
 
+/// Fills the row's cells and, when `hatches` is given, appends its hatches.
 void fill_row(FillRule rule, const GridSpec& grid, std::vector<ScanCrossing>::iterator begin,
               std::vector<ScanCrossing>::iterator end, std::uint8_t* cells,
-              std::vector<HatchSegment>& hatches) {
+              std::vector<HatchSegment>* hatches) {
   std::sort(begin, end, before);
   long long winding = 0;
   long long count = 0;
@@ -183,11 +239,12 @@ void fill_row(FillRule rule, const GridSpec& grid, std::vector<ScanCrossing>::it
       if (inside) std::fill(cells + from, cells + it->cells_left, std::uint8_t{1});
       from = it->cells_left;
     }
-    if (inside && it->x > hatch_from) {
-      if (!hatches.empty() && hatches.back().row == it->row && hatches.back().x_end == hatch_from) {
-        hatches.back().x_end = it->x;
+    if (hatches != nullptr && inside && it->x > hatch_from) {
+      if (!hatches->empty() && hatches->back().row == it->row &&
+          hatches->back().x_end == hatch_from) {
+        hatches->back().x_end = it->x;
       } else {
-        hatches.push_back({it->row, hatch_from, it->x});
+        hatches->push_back({it->row, hatch_from, it->x});
       }
     }
     hatch_from = std::max(hatch_from, it->x);
@@ -199,7 +256,7 @@ void fill_row(FillRule rule, const GridSpec& grid, std::vector<ScanCrossing>::it
 }  // namespace
 
 LayerFill fill_layer(const IndexedMesh& mesh, const ExactLayer& layer, const GridSpec& grid,
-                     FillRule rule, double scan_offset_mm) {
+                     FillRule rule, double scan_offset_mm, bool want_hatches) {
   LayerFill out;
   out.layer = layer.layer;
   out.solid.assign(grid.cells_per_layer(), 0);
@@ -212,6 +269,7 @@ LayerFill fill_layer(const IndexedMesh& mesh, const ExactLayer& layer, const Gri
 
   std::vector<ScanCrossing> crossings;
   RowCrossings row_crossings;
+  RowCrossingBounds bounds;
   for (const ExactSegment& s : layer.segments) {
     if (s.zero_length) continue;
     const std::uint32_t rows_start = rows_at_or_below(layer.start_of(s).y);
@@ -226,21 +284,45 @@ LayerFill fill_layer(const IndexedMesh& mesh, const ExactLayer& layer, const Gri
     STRATA_ASSERT((rows_end > rows_start) == (s.normal_x_sign > 0) && s.normal_x_sign != 0,
                   "segment direction disagrees with the facet normal");
     const auto& corners = mesh.triangles[s.facet];
-    int e_rows = INT_MAX;
+    const Vec3& a = mesh.vertices[corners[0]];
+    const Vec3& b = mesh.vertices[corners[1]];
+    const Vec3& c = mesh.vertices[corners[2]];
+    // Without hatches only the cells left of each crossing matter: an interval in doubles
+    // counts them unless a cell centre lies inside it. Such a count ties no comparison the exact
+    // way would make (the rounded crossing lies inside the interval too).
+    const bool bounded = !want_hatches && bounds.start(a, b, c, layer.z_mm);
+    bool started = false;
     for (std::uint32_t j = first; j < last; ++j) {
-      lower_to_last_bit(e_rows, row_y(j));
-    }
-    row_crossings.start(mesh.vertices[corners[0]], mesh.vertices[corners[1]],
-                        mesh.vertices[corners[2]], layer.z_mm, e_rows);
-    for (std::uint32_t j = first; j < last; ++j) {
-      ScanCrossing c;
-      c.row = j;
-      c.weight = weight;
-      c.x = row_crossings.rounded(row_y(j));
-      c.cells_left = count_prefix(grid.nx, [&](std::uint32_t i) {
-        return ties.compare(row_crossings, c.x, grid.xc(i)) > 0;
-      });
-      crossings.push_back(c);
+      ScanCrossing crossing;
+      crossing.row = j;
+      crossing.weight = weight;
+      if (bounded) {
+        double lo = 0.0;
+        double hi = 0.0;
+        bounds.bounds(row_y(j), lo, hi);
+        if (std::isfinite(lo) && std::isfinite(hi)) {
+          const std::uint32_t left =
+              strata::detail::count_prefix((lo - grid.x0) / grid.dx + 0.5, grid.nx,
+                                           [&](std::uint32_t i) { return grid.xc(i) < lo; });
+          if (left == grid.nx || grid.xc(left) > hi) {
+            crossing.cells_left = left;
+            crossings.push_back(crossing);
+            continue;
+          }
+        }
+      }
+      if (!started) {
+        int e_rows = INT_MAX;
+        for (std::uint32_t r = first; r < last; ++r) lower_to_last_bit(e_rows, row_y(r));
+        row_crossings.start(a, b, c, layer.z_mm, e_rows);
+        started = true;
+      }
+      const double x = row_crossings.rounded(row_y(j));
+      crossing.cells_left = count_prefix(
+          grid.nx, [&](std::uint32_t i) { return ties.compare(row_crossings, x, grid.xc(i)) > 0; });
+      // Crossings without hatches are ordered by the cells left of them alone.
+      crossing.x = want_hatches ? x : 0.0;
+      crossings.push_back(crossing);
     }
   }
   out.crossings = crossings.size();
@@ -251,7 +333,7 @@ LayerFill fill_layer(const IndexedMesh& mesh, const ExactLayer& layer, const Gri
     auto end = begin;
     while (end != crossings.end() && end->row == begin->row) ++end;
     fill_row(rule, grid, begin, end, out.solid.data() + std::size_t{begin->row} * grid.nx,
-             out.hatches);
+             want_hatches ? &out.hatches : nullptr);
     begin = end;
   }
   out.exact_fallbacks = ties.ties();

@@ -16,8 +16,9 @@ namespace strata::exact::detail {
 /// `exact_fallbacks` counts the comparisons that the nearest doubles left tied.
 /// @pre rule is NonZero or EvenOdd.
 /// The crossings are computed from the plane of each segment's facet in `mesh` (the mesh the
-/// layer was cut from).
+/// layer was cut from). Without `want_hatches`, LayerFill::hatches stays empty and a crossing is
+/// rounded only where a double interval cannot place it between two cell centres.
 LayerFill fill_layer(const IndexedMesh& mesh, const ExactLayer& layer, const GridSpec& grid,
-                     FillRule rule, double scan_offset_mm);
+                     FillRule rule, double scan_offset_mm, bool want_hatches = true);
 
 }  // namespace strata::exact::detail

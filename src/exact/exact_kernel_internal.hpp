@@ -42,6 +42,7 @@ class ExactKernel final : public LayerKernel {
 
   void prepare_batch(std::uint32_t k0, std::uint32_t k1) override;
   LayerGeometry compute_layer(std::uint32_t k) const override;
+  void want_hatches(bool wanted) override { hatches_wanted_ = wanted; }
   std::string_view name() const override { return "exact path"; }
 
   /// The soup repair figures and the layers counted so far by contour method.
@@ -55,6 +56,7 @@ class ExactKernel final : public LayerKernel {
   std::unique_ptr<SoupMesh> soup_;
   std::vector<std::int8_t> normal_x_signs_;
   FacetSweep sweep_;
+  bool hatches_wanted_ = true;
   mutable std::atomic<std::uint32_t> halfedge_layers_{0};
   mutable std::atomic<std::uint32_t> arrangement_layers_{0};
   mutable std::atomic<std::uint32_t> empty_layers_{0};

@@ -40,6 +40,7 @@ class BinaryCellsWriter final : public detail::SingleFileSink {
   explicit BinaryCellsWriter(std::filesystem::path path) : SingleFileSink(std::move(path), kKind) {}
 
   bool needs_cells() const override { return true; }
+  bool needs_hatches() const override { return false; }
 
  protected:
   Result<void> write_header(OutputFile& out) override {
@@ -88,6 +89,7 @@ class AsciiCellsWriter final : public detail::SingleFileSink {
   explicit AsciiCellsWriter(std::filesystem::path path) : SingleFileSink(std::move(path), kKind) {}
 
   bool needs_cells() const override { return true; }
+  bool needs_hatches() const override { return false; }
 
  protected:
   Result<void> write_header(OutputFile& out) override {

@@ -41,6 +41,7 @@ class PngStackWriter final : public detail::LayerFilesSink {
       : LayerFilesSink(dir, "png", std::move(stem), "png", "PNG stack writer"), options_(options) {}
 
   bool needs_cells() const override { return true; }
+  bool needs_hatches() const override { return false; }
 
  protected:
   Result<void> write_layer(detail::LayerBytes& out, const LayerResult& layer) const override {

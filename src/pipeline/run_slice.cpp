@@ -124,6 +124,8 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
       std::any_of(sinks.begin(), sinks.end(), [](const LayerSink* s) { return s->needs_cells(); });
   summary.cells_classified = classify;
   kernel.want_cells(classify);
+  kernel.want_hatches(std::any_of(sinks.begin(), sinks.end(),
+                                  [](const LayerSink* s) { return s->needs_hatches(); }));
   const std::uint32_t reach =
       classify ? BoundaryShell::reach_layers(grid, options.shell_mode, options.shell_mm) : 0;
   // A range also slices the layers around it that the shell reads (their cells are not sent),

@@ -26,7 +26,7 @@ LayerGeometry FastKernel::compute_layer(std::uint32_t k) const {
   LayerGeometry geometry;
   geometry.segments = static_cast<std::uint32_t>(segments.segments.size());
   geometry.fill = scanline_fill(mesh_, segments, grid_, options_.fill_rule, options_.scan_offset_mm,
-                                {.cells = cells_wanted_, .hatches = true});
+                                {.cells = cells_wanted_, .hatches = hatches_wanted_});
   geometry.contours = assemble_contours(mesh_, segments);
   if (!geometry.contours.loops_are_simple()) {
     geometry.contours = outline_layer(std::move(geometry.contours), candidates, k);

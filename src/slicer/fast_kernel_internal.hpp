@@ -20,6 +20,7 @@ class FastKernel final : public LayerKernel {
   void prepare_batch(std::uint32_t k0, std::uint32_t k1) override;
   LayerGeometry compute_layer(std::uint32_t k) const override;
   void want_cells(bool wanted) override { cells_wanted_ = wanted; }
+  void want_hatches(bool wanted) override { hatches_wanted_ = wanted; }
   std::string_view name() const override { return "fast path"; }
 
  private:
@@ -33,6 +34,7 @@ class FastKernel final : public LayerKernel {
   SliceOptions options_;
   FacetSweep sweep_;  ///< grouped by the first prepare_batch
   bool cells_wanted_ = true;
+  bool hatches_wanted_ = true;
 };
 
 }  // namespace strata::detail

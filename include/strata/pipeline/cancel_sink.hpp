@@ -22,6 +22,7 @@ class CancelSink final : public LayerSink {
   Result<void> finish() override;
   void abort() noexcept override {}
   bool needs_cells() const override { return false; }
+  bool needs_hatches() const override { return false; }
 
  private:
   Result<void> check() const;

@@ -31,6 +31,10 @@ class LayerKernel {
   /// hold contours and hatches only) a kernel may leave LayerGeometry::fill.solid empty and skip
   /// deciding cells.
   virtual void want_cells(bool /*wanted*/) {}
+  /// Says, before the first batch of a run, whether its hatches are wanted: when not (no output
+  /// holds them) a kernel may leave LayerGeometry::fill.hatches empty and skip what only they
+  /// need.
+  virtual void want_hatches(bool /*wanted*/) {}
   /// How failure messages name the kernel: "fast path", "exact path".
   virtual std::string_view name() const { return "layer kernel"; }
 };

@@ -77,6 +77,9 @@ class LayerSink {
   /// (SliceOptions::always_classify false), the engine skips the shell and the classification
   /// and hands every sink an empty `cells`.
   virtual bool needs_cells() const { return true; }
+  /// Whether add_layer reads LayerResult::hatches. When no sink does, the engine may hand every
+  /// sink an empty `hatches`.
+  virtual bool needs_hatches() const { return true; }
 };
 
 /// Aborts every sink (each abort() is idempotent and does not throw).

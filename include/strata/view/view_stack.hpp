@@ -64,6 +64,7 @@ class ViewStackCollector final : public LayerSink {
                                   std::unique_ptr<PreparedLayer> prepared) override;
   Result<void> finish() override;
   void abort() noexcept override;
+  bool needs_hatches() const override { return options_.hatches; }
 
   /// The collected stack. @pre finish() returned success.
   ViewStack take();
