@@ -17,6 +17,7 @@ class CollectingSink final : public LayerSink {
     layers.push_back(layer.cells);
     loops.push_back(layer.contours.loops);
     order.push_back(layer.layer);
+    hatches += layer.hatches.size();
     return {};
   }
   Result<void> finish() override {
@@ -24,6 +25,7 @@ class CollectingSink final : public LayerSink {
     return {};
   }
   void abort() noexcept override { aborted = true; }
+  bool needs_hatches() const override { return reads_hatches; }
 
   CellClass at(std::uint32_t i, std::uint32_t j, std::uint32_t k) const {
     return layers[k][std::size_t{j} * grid.nx + i];
@@ -40,6 +42,8 @@ class CollectingSink final : public LayerSink {
   std::vector<std::vector<CellClass>> layers;
   std::vector<std::vector<Contour>> loops;
   std::vector<std::uint32_t> order;
+  std::size_t hatches = 0;    ///< hatch segments handed out, over all layers
+  bool reads_hatches = true;  ///< what needs_hatches() says
   bool finished = false;
   bool aborted = false;
 };

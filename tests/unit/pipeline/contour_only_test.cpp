@@ -1,5 +1,6 @@
 // Contour outputs alone (CLI, SVG) need no cell: the engine then skips the shell and the
-// classification, and everything it still hands out is what a full run hands out.
+// classification, and everything it still hands out is what a full run hands out. Likewise
+// outputs without hatches (cells, PNG) get none, and the same cells.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -160,6 +161,35 @@ TEST_P(ContourOnly, TheDefaultOptionsClassifyForTheSummaryEvenWithoutACellSink) 
   EXPECT_EQ(r->class_counts[1], reference.count(CellClass::Interior));
   EXPECT_EQ(r->class_counts[2], reference.count(CellClass::Boundary));
   EXPECT_EQ(r->class_counts[0] + r->class_counts[1] + r->class_counts[2], s.grid.cell_count());
+}
+
+TEST_P(ContourOnly, WithoutAHatchSinkTheCellsAndTheSummaryAreThoseOfAFullRun) {
+  const SphereRun s;
+  testing::CollectingSink reference;
+  LayerSink* reference_sinks[] = {&reference};
+  const auto full = s.run(GetParam(), s.options, reference_sinks);
+  ASSERT_TRUE(full) << full.error().message;
+  ASSERT_GT(reference.hatches, 0u);
+
+  testing::CollectingSink cells;
+  cells.reads_hatches = false;
+  LayerSink* sinks[] = {&cells};
+  const auto r = s.run(GetParam(), s.options, sinks);
+  ASSERT_TRUE(r) << r.error().message;
+  EXPECT_EQ(cells.hatches, 0u);
+  EXPECT_EQ(cells.layers, reference.layers);
+  EXPECT_TRUE(same_loops(cells.loops, reference.loops));
+  EXPECT_EQ(r->exact_fallbacks, full->exact_fallbacks);
+  EXPECT_EQ(r->contour_volume_mm3, full->contour_volume_mm3);
+
+  // One sink that reads them is enough for every sink to get them.
+  testing::CollectingSink without;
+  without.reads_hatches = false;
+  testing::CollectingSink with;
+  LayerSink* both[] = {&without, &with};
+  ASSERT_TRUE(s.run(GetParam(), s.options, both));
+  EXPECT_EQ(with.hatches, reference.hatches);
+  EXPECT_EQ(without.hatches, reference.hatches);
 }
 
 INSTANTIATE_TEST_SUITE_P(Kernels, ContourOnly, ::testing::Values(Kernel::Fast, Kernel::Exact),
