@@ -45,8 +45,8 @@ TEST(ExactFill, ACrossingAmongTheSubnormalDoublesIsThatDoubleExactly) {
 }
 
 /// Every layer of `mesh` filled by the exact path with and without hatches: the cells, the number
-/// of crossings and of exact decisions must agree, and no hatch be made without them. Returns the
-/// exact decisions of the whole model.
+/// of crossings and of exact decisions must agree, and no hatch be made without them; the model
+/// must cross some row. Returns the exact decisions of the whole model.
 std::uint64_t expect_fill_without_hatches_agrees(const IndexedMesh& mesh, const GridSpec& grid,
                                                  FillRule rule, double scan_offset = 0.0) {
   using namespace exact::detail;
@@ -54,6 +54,7 @@ std::uint64_t expect_fill_without_hatches_agrees(const IndexedMesh& mesh, const 
   std::iota(facets.begin(), facets.end(), FacetIndex{0});
   const std::vector<std::int8_t> signs = facet_normal_x_signs(mesh);
   std::uint64_t fallbacks = 0;
+  std::uint64_t crossings = 0;
   for (std::uint32_t k = 0; k < grid.nz; ++k) {
     const ExactLayer layer = cut_layer(mesh, facets, signs, k, grid.zk(k));
     const LayerFill full = fill_layer(mesh, layer, grid, rule, scan_offset, true);
@@ -63,7 +64,9 @@ std::uint64_t expect_fill_without_hatches_agrees(const IndexedMesh& mesh, const 
     EXPECT_EQ(cells_only.exact_fallbacks, full.exact_fallbacks) << "layer " << k;
     EXPECT_TRUE(cells_only.hatches.empty()) << "layer " << k;
     fallbacks += full.exact_fallbacks;
+    crossings += full.crossings;
   }
+  EXPECT_GT(crossings, 0u) << "the model must cross the grid's rows";
   return fallbacks;
 }
 
