@@ -4,6 +4,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "exact/exact_fill_internal.hpp"
@@ -166,6 +167,20 @@ class RowCrossingBounds {
     return std::fabs(nx_.v) > 4.0 * nx_.e + strata::detail::kUnderflowSlack;
   }
 
+  /// The number of cell centres left of the exact crossing of row y, when no centre lies within
+  /// the crossing's interval; nullopt when one does (or the interval is not finite).
+  std::optional<std::uint32_t> cells_left(double y, const GridSpec& grid) const {
+    double lo = 0.0;
+    double hi = 0.0;
+    bounds(y, lo, hi);
+    if (!std::isfinite(lo) || !std::isfinite(hi)) return std::nullopt;
+    const std::uint32_t left = strata::detail::count_prefix(
+        (lo - grid.x0) / grid.dx + 0.5, grid.nx, [&](std::uint32_t i) { return grid.xc(i) < lo; });
+    if (left < grid.nx && grid.xc(left) <= hi) return std::nullopt;
+    return left;
+  }
+
+ private:
   /// Doubles lo < hi with the exact crossing of row y strictly between them.
   void bounds(double y, double& lo, double& hi) const {
     using E = strata::detail::ErrorBoundedDouble;
@@ -188,7 +203,6 @@ class RowCrossingBounds {
     hi = std::nextafter(x + bound, HUGE_VAL);
   }
 
- private:
   strata::detail::ErrorBoundedDouble nx_, ny_, rest_;
   double ax_ = 0.0;
   double ay_ = 0.0;
@@ -296,20 +310,10 @@ LayerFill fill_layer(const IndexedMesh& mesh, const ExactLayer& layer, const Gri
       ScanCrossing crossing;
       crossing.row = j;
       crossing.weight = weight;
-      if (bounded) {
-        double lo = 0.0;
-        double hi = 0.0;
-        bounds.bounds(row_y(j), lo, hi);
-        if (std::isfinite(lo) && std::isfinite(hi)) {
-          const std::uint32_t left =
-              strata::detail::count_prefix((lo - grid.x0) / grid.dx + 0.5, grid.nx,
-                                           [&](std::uint32_t i) { return grid.xc(i) < lo; });
-          if (left == grid.nx || grid.xc(left) > hi) {
-            crossing.cells_left = left;
-            crossings.push_back(crossing);
-            continue;
-          }
-        }
+      if (const auto left = bounded ? bounds.cells_left(row_y(j), grid) : std::nullopt) {
+        crossing.cells_left = *left;
+        crossings.push_back(crossing);
+        continue;
       }
       if (!started) {
         int e_rows = INT_MAX;

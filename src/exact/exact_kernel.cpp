@@ -120,8 +120,8 @@ LayerGeometry ExactKernel::compute_layer(std::uint32_t k) const {
 
   LayerGeometry geometry;
   geometry.segments = static_cast<std::uint32_t>(layer.segments.size());
-  geometry.fill = fill_layer(mesh_, layer, grid_, options_.fill_rule, options_.scan_offset_mm,
-                             hatches_wanted_);
+  geometry.fill =
+      fill_layer(mesh_, layer, grid_, options_.fill_rule, options_.scan_offset_mm, hatches_wanted_);
   if (layer.segments.empty()) {
     ++empty_layers_;
     geometry.contours = finish_contours(k, z, {}, 0);
