@@ -4,11 +4,13 @@
 #include <benchmark/benchmark.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
 #include "export/grey_png_internal.hpp"
 #include "sample_models.hpp"
+#include "strata/fill/scanline_fill.hpp"
 #include "strata/io/read_mesh.hpp"
 #include "strata/slice/slice_float.hpp"
 #include "strata/slicer/slice_model.hpp"
@@ -80,6 +82,47 @@ void BM_SliceLayerSegments(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_SliceLayerSegments)->Unit(benchmark::kMicrosecond);
+
+/// The distance shell on its own (about half of a `--format cells` run): building its marker
+/// (the facets grouped into patches), and classifying one layer from the solid cells of it and
+/// of the layers beside it, at the middle of the sphere (the default 0.1 mm grid, 0.5 mm shell).
+void BM_ShellSetupSphere(benchmark::State& state) {
+  const IndexedMesh& mesh = model("sphere.stl");
+  const GridSpec grid = *make_grid(mesh.bounds(), GridOptions{});
+  for (auto _ : state) {
+    const BoundaryShell shell(mesh, grid, ShellMode::Distance, 0.5);
+    benchmark::DoNotOptimize(&shell);
+  }
+}
+BENCHMARK(BM_ShellSetupSphere)->Unit(benchmark::kMillisecond);
+
+void BM_ShellClassifyLayerSphere(benchmark::State& state) {
+  const IndexedMesh& mesh = model("sphere.stl");
+  const GridSpec grid = *make_grid(mesh.bounds(), GridOptions{});
+  std::vector<FacetIndex> all(mesh.triangles.size());
+  std::iota(all.begin(), all.end(), FacetIndex{0});
+  const std::uint32_t k = grid.nz / 2;
+  std::vector<std::vector<std::uint8_t>> solid;  // layers k - 1, k, k + 1
+  for (std::uint32_t q = k - 1; q <= k + 1; ++q) {
+    solid.push_back(scanline_fill(mesh, slice_layer(mesh, all, grid, q), grid, FillRule::NonZero,
+                                  0.0, FillWanted{.cells = true, .hatches = false})
+                        .solid);
+  }
+  const SolidLayerLookup lookup = [&](std::int64_t q) -> const std::uint8_t* {
+    const std::int64_t at = q - (static_cast<std::int64_t>(k) - 1);
+    return at >= 0 && at < 3 ? solid[static_cast<std::size_t>(at)].data() : nullptr;
+  };
+  const BoundaryShell shell(mesh, grid, ShellMode::Distance, 0.5);
+  std::vector<CellClass> cells;
+  for (auto _ : state) {
+    shell.classify(k, lookup, cells);
+    benchmark::DoNotOptimize(cells.data());
+  }
+  state.counters["cells"] = static_cast<double>(cells.size());
+  state.counters["boundary"] =
+      static_cast<double>(std::count(cells.begin(), cells.end(), CellClass::Boundary));
+}
+BENCHMARK(BM_ShellClassifyLayerSphere)->Unit(benchmark::kMicrosecond);
 
 /// The layers each facet crosses: two exact plane counts a facet from a first guess (count_prefix).
 void BM_FacetLayerRanges(benchmark::State& state) {
