@@ -263,7 +263,7 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
       return first != o.first ? first < o.first : second < o.second;
     }
   };
-  const auto by_patch = std::make_unique_for_overwrite<PatchKey[]>(nf);
+  auto by_patch = std::make_unique_for_overwrite<PatchKey[]>(nf);
   advise_huge_pages(by_patch.get(), nf * sizeof(PatchKey));
   const Vec3 low = mesh_.bounds().min;
   const auto box_index = [](double offset, double size) {
@@ -288,8 +288,30 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
                      box_index(cx - low.x, patch_x),
                  static_cast<FacetIndex>(f)};
   });
-  // Ties by index, so that the parallel sort gives one order.
-  tbb::parallel_sort(by_patch.get(), by_patch.get() + nf);
+  // Ordered by box, ties by index. When the boxes the facets span are fewer than the facets, by
+  // counting (one pass over the facets and one over the boxes, in facet order within a box);
+  // otherwise by a parallel sort.
+  constexpr std::uint64_t kAxis = (std::uint64_t{1} << 21) - 1;
+  std::uint64_t boxes_x = 1, boxes_y = 1, boxes_z = 1;
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::uint64_t key = by_patch[f].first;
+    boxes_x = std::max(boxes_x, (key & kAxis) + 1);
+    boxes_y = std::max(boxes_y, (key >> 21 & kAxis) + 1);
+    boxes_z = std::max(boxes_z, (key >> 42) + 1);
+  }
+  if (boxes_x * boxes_y * boxes_z <= nf) {
+    const auto box_of = [&](std::uint64_t key) {
+      return ((key >> 42) * boxes_y + (key >> 21 & kAxis)) * boxes_x + (key & kAxis);
+    };
+    std::vector<std::uint32_t> next(boxes_x * boxes_y * boxes_z + 1, 0);
+    for (std::size_t f = 0; f < nf; ++f) ++next[box_of(by_patch[f].first) + 1];
+    std::partial_sum(next.begin(), next.end(), next.begin());
+    auto sorted = std::make_unique_for_overwrite<PatchKey[]>(nf);
+    for (std::size_t f = 0; f < nf; ++f) sorted[next[box_of(by_patch[f].first)]++] = by_patch[f];
+    by_patch = std::move(sorted);
+  } else {
+    tbb::parallel_sort(by_patch.get(), by_patch.get() + nf);
+  }
   // A patch begins where the key changes. The sorted keys are cut into blocks that count their
   // beginnings, then number them from the count of the blocks before: in parallel, one result.
   const auto begins_patch = [&](std::size_t r) {

@@ -119,6 +119,9 @@ TEST(BoundaryShell, ATiltedBoxIsItsDefinitionCellForCell) {
 }
 
 TEST(BoundaryShell, ATetrahedronAndASphereAreTheirDefinitionCellForCell) {
+  // The shell groups facets into patches by box: by counting when the boxes they span are no
+  // more than the facets (these two, 4 and 208 boxes), by sorting otherwise (the tilted box's 12
+  // facets span 90).
   const IndexedMesh tetra = weld_vertices(mesh::make_tetrahedron());
   EXPECT_GT(expect_shell_by_definition(tetra, 0.25, 0.9), 100u);
   // 320 facets about 1.6 mm wide: rows of six to eight cells, decided cell by cell or as runs.
