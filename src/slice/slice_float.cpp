@@ -1,6 +1,7 @@
 #include "strata/slice/slice_float.hpp"
 
 #include <algorithm>
+#include <boost/sort/spreadsort/integer_sort.hpp>
 #include <limits>
 #include <optional>
 
@@ -100,7 +101,8 @@ std::vector<FacetIndex> FacetSweep::candidates(std::uint32_t k) const {
   for (const FacetIndex f : active_) {
     if (ranges_.first[f] <= k && k <= ranges_.last[f]) out.push_back(f);
   }
-  std::sort(out.begin(), out.end());
+  // Facet indices are integers: a radix-based sort (spreadsort) takes them in a few passes.
+  boost::sort::spreadsort::integer_sort(out.begin(), out.end());
   return out;
 }
 
