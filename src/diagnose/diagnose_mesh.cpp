@@ -437,11 +437,14 @@ void find_vertex_defects_and_duplicates(const IndexedMesh& mesh,
         for (VertexIndex w : t) {
           if (w != v) neighbours.push_back((std::uint64_t{w} << 32) | k);
         }
-        std::sort(t.begin(), t.end());
+        // Three compare-exchanges put the corners in order.
+        if (t[1] < t[0]) std::swap(t[0], t[1]);
+        if (t[2] < t[1]) std::swap(t[1], t[2]);
+        if (t[1] < t[0]) std::swap(t[0], t[1]);
         if (t[0] == v) lowest_here.push_back({(std::uint64_t{t[1]} << 32) | t[2], f});
       }
       if (lowest_here.size() > 1) {
-        std::sort(lowest_here.begin(), lowest_here.end());  // copies follow their first, by facet
+        sort_few(lowest_here.begin(), lowest_here.end());  // copies follow their first, by facet
         for (std::size_t s = 1; s < lowest_here.size(); ++s) {
           if (lowest_here[s].first == lowest_here[s - 1].first)
             is_duplicate[lowest_here[s].second] = 1;
