@@ -83,7 +83,19 @@ class CliWriter final : public detail::SingleFileSink {
   }
 
   void write_ascii_layer(detail::LayerBytes& out, const LayerResult& layer, double z_top) const {
-    std::string s = "$$LAYER/";
+    // Room for the layer's text reserved ahead, so that it is not moved as it grows: a number
+    // and its separator take at most 25 characters (17 digits, sign, point and exponent), a
+    // line's keyword and counts less than 64. The piece kept before flushing holds a point or a
+    // hatch more than the flush size.
+    constexpr std::size_t kNumberBytes = 25;
+    std::size_t most = 64;
+    for (const Contour& loop : layer.contours.loops)
+      most += 64 + (loop.points.size() + 1) * 2 * kNumberBytes;
+    most += 64 + layer.hatches.size() * 4 * kNumberBytes;
+    out.reserve_more(most);
+    std::string s;
+    s.reserve(std::min(most, kFlushBytes + 256));
+    s = "$$LAYER/";
     detail::append_number(s, z_top);
     s += '\n';
     for (const Contour& loop : layer.contours.loops) {

@@ -77,6 +77,11 @@ class LayerBytes {
  public:
   explicit LayerBytes(OutputFile& file) : file_(&file) {}
   explicit LayerBytes(std::string& memory) : memory_(&memory) {}
+  /// Room for `bytes` more in memory, so that appending them moves nothing already written; a
+  /// file needs none.
+  void reserve_more(std::size_t bytes) {
+    if (memory_ != nullptr) memory_->reserve(memory_->size() + bytes);
+  }
   void write(std::string_view bytes) {
     if (file_ != nullptr) {
       file_->write(bytes);
