@@ -399,6 +399,42 @@ void find_near_vertices(const IndexedMesh& mesh, const Bbox3& bounds, double tol
   report.near_vertices = near.finish();
 }
 
+/// Whether `facets` (a few, each holding vertex v once) run around v as one cycle, as about a
+/// vertex of a closed, consistently oriented mesh. Each facet is taken as (v, after, before) in
+/// its own orientation; the next is the one whose `after` is this one's `before`, and the walk
+/// from the first comes back to it after visiting every facet. Consecutive facets share a corner
+/// besides v, so they make one fan. False when that cannot be told so simply (more than 16 facets,
+/// a walk that stops or closes early): the fans are then counted in general.
+bool one_cycle_of_facets(const IndexedMesh& mesh, VertexIndex v,
+                         std::span<const FacetIndex> facets) {
+  constexpr std::size_t kMost = 16;
+  const std::size_t n = facets.size();
+  if (n > kMost) return false;
+  // Facet k as (v, after[k], before[k]) in its own orientation.
+  VertexIndex after[kMost];
+  VertexIndex before[kMost];
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& t = mesh.triangles[facets[k]];
+    const int at = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+    after[k] = t[(at + 1) % 3];
+    before[k] = t[(at + 2) % 3];
+  }
+  std::size_t k = 0;
+  for (std::size_t step = 1; step <= n; ++step) {
+    std::size_t next = n;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (after[j] == before[k]) {
+        next = j;
+        break;
+      }
+    }
+    if (next == n) return false;
+    k = next;
+    if (k == 0) return step == n;
+  }
+  return false;
+}
+
 /// The facets with area around each vertex, in increasing order.
 ByVertex<FacetIndex> facets_around_vertices(const IndexedMesh& mesh,
                                             const std::vector<bool>& degenerate) {
@@ -429,14 +465,10 @@ void find_vertex_defects_and_duplicates(const IndexedMesh& mesh,
     for (std::size_t v = range.begin(); v < range.end(); ++v) {
       const std::size_t first = around.start[v];
       const std::size_t n = around.start[v + 1] - first;
-      neighbours.clear();
       lowest_here.clear();
       for (std::size_t k = 0; k < n; ++k) {
         const FacetIndex f = around.items[first + k];
         auto t = mesh.triangles[f];
-        for (VertexIndex w : t) {
-          if (w != v) neighbours.push_back((std::uint64_t{w} << 32) | k);
-        }
         // Three compare-exchanges put the corners in order.
         if (t[1] < t[0]) std::swap(t[0], t[1]);
         if (t[2] < t[1]) std::swap(t[1], t[2]);
@@ -450,7 +482,15 @@ void find_vertex_defects_and_duplicates(const IndexedMesh& mesh,
             is_duplicate[lowest_here[s].second] = 1;
         }
       }
-      if (n < 2) continue;
+      if (n < 2 || one_cycle_of_facets(mesh, v, std::span(around.items).subspan(first, n))) {
+        continue;
+      }
+      neighbours.clear();
+      for (std::size_t k = 0; k < n; ++k) {
+        for (VertexIndex w : mesh.triangles[around.items[first + k]]) {
+          if (w != v) neighbours.push_back((std::uint64_t{w} << 32) | k);
+        }
+      }
       sort_few(neighbours.begin(), neighbours.end());
       fans.reset(n);
       for (std::size_t s = 1; s < neighbours.size(); ++s) {

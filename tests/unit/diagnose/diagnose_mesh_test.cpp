@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -160,6 +161,42 @@ TEST(DiagnoseMesh, BoxesSharingAVertexHaveOneNonManifoldVertex) {
   EXPECT_EQ(r.shells.size(), 2U);  // a vertex does not join shells
   EXPECT_EQ(r.self_intersections.count, 0U);
   EXPECT_EQ(r.verdict, Verdict::PrintableUnderRule);
+}
+
+/// A closed double pyramid, consistently oriented: `sides` corners about `centre` at radius 1,
+/// apexes 1 above and below it.
+std::vector<Triangle> double_pyramid(const Vec3& centre, int sides) {
+  std::vector<Triangle> out;
+  const Vec3 top{centre.x, centre.y, centre.z + 1};
+  const Vec3 bottom{centre.x, centre.y, centre.z - 1};
+  const auto corner = [&](int i) {
+    const double angle = 6.283185307179586 * (i % sides) / sides;
+    return Vec3{centre.x + std::cos(angle), centre.y + std::sin(angle), centre.z};
+  };
+  for (int i = 0; i < sides; ++i) {
+    out.push_back({corner(i), corner(i + 1), top});
+    out.push_back({corner(i + 1), corner(i), bottom});
+  }
+  return out;
+}
+
+TEST(DiagnoseMesh, AVertexsFansAreCountedWhateverItsFacetsNumberAndOrientation) {
+  // Walking a vertex's facets in their orientation tells one fan at once; more than 16 facets,
+  // two fans, or a facet turned the other way are counted in general. The counts agree.
+  for (const int sides : {6, 12, 24}) {
+    const std::vector<Triangle> one = double_pyramid({0, 0, 0}, sides);
+    EXPECT_EQ(diagnose(one).non_manifold_vertices.count, 0U) << sides;
+    std::vector<Triangle> turned = one;
+    turned[3] = reversed(turned[3]);
+    EXPECT_EQ(diagnose(turned).non_manifold_vertices.count, 0U) << sides;
+    // A second one standing on the first's top apex: two fans about it, whichever way each turns.
+    const std::vector<Triangle> above = double_pyramid({0, 0, 2}, sides);
+    for (const auto& two : {joined(one, above), joined(one, reversed(above))}) {
+      const MeshReport r = diagnose(two);
+      ASSERT_EQ(r.non_manifold_vertices.count, 1U) << sides;
+      EXPECT_EQ(r.non_manifold_vertices.locations[0], (Vec3{0, 0, 1})) << sides;
+    }
+  }
 }
 
 TEST(DiagnoseMesh, DuplicatedFacetIsCountedOnce) {
