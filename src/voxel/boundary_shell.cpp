@@ -246,12 +246,7 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
   }
   if (!(thickness_mm_ > 0.0)) return;
   const std::size_t nf = mesh_.triangles.size();
-  // These arrays and the copies below are filled once: huge pages spare a fault per 4 KiB.
-  // Written whole by the threads below: not zeroed on one thread first.
-  const auto zmin = std::make_unique_for_overwrite<double[]>(nf);
-  const auto zmax = std::make_unique_for_overwrite<double[]>(nf);
-  advise_huge_pages(zmin.get(), nf * sizeof(double));
-  advise_huge_pages(zmax.get(), nf * sizeof(double));
+  // The arrays below are filled once: huge pages spare a fault per 4 KiB.
   // Patches: the facets whose centroids share a box of kPatchCells cells by kPatchLayers layers,
   // counted from the mesh's lowest corner. A facet's box is the key it is sorted by, beside its
   // index, so the sort reads no other array.
@@ -278,8 +273,6 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
     const Vec3& a = mesh_.vertices[t[0]];
     const Vec3& b = mesh_.vertices[t[1]];
     const Vec3& c = mesh_.vertices[t[2]];
-    zmin[f] = std::min({a.z, b.z, c.z});
-    zmax[f] = std::max({a.z, b.z, c.z});
     const double cx = (a.x + b.x + c.x) / 3.0;
     const double cy = (a.y + b.y + c.y) / 3.0;
     const double cz = (a.z + b.z + c.z) / 3.0;
@@ -356,12 +349,8 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
                     [&](std::size_t v) { first_use[v].store(kUnused, std::memory_order_relaxed); });
   tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t q) {
     Patch& patch = patches[q];
-    patch.zmin = std::numeric_limits<double>::infinity();
-    patch.zmax = -std::numeric_limits<double>::infinity();
     for (std::uint32_t r = patch.begin; r < patch.end; ++r) {
       const FacetIndex f = by_patch[r].second;
-      patch.zmin = std::min(patch.zmin, zmin[f]);
-      patch.zmax = std::max(patch.zmax, zmax[f]);
       const auto& tri = mesh_.triangles[f];
       triangles_by_patch_[r] = tri;
       for (int corner = 0; corner < 3; ++corner) {
@@ -416,10 +405,15 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
   });
   tbb::parallel_for(std::size_t{0}, patches.size(), [&](std::size_t q) {
     Patch& patch = patches[q];
+    // Its facets' z-range, from their corners as they are read here.
+    patch.zmin = std::numeric_limits<double>::infinity();
+    patch.zmax = -std::numeric_limits<double>::infinity();
     for (std::uint32_t r = patch.begin; r < patch.end; ++r) {
       for (VertexIndex& v : triangles_by_patch_[r]) {
         v = renumbered[v];
         const Vec3& p = vertices_by_patch_[v];
+        patch.zmin = std::min(patch.zmin, p.z);
+        patch.zmax = std::max(patch.zmax, p.z);
         patch.facet_lo = {std::min(patch.facet_lo.x, p.x), std::min(patch.facet_lo.y, p.y), 0.0};
         patch.facet_hi = {std::max(patch.facet_hi.x, p.x), std::max(patch.facet_hi.y, p.y), 0.0};
       }
