@@ -281,7 +281,7 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
                      box_index(cx - low.x, patch_x),
                  static_cast<FacetIndex>(f)};
   });
-  // Ordered by box, ties by index. When the boxes the facets span are fewer than the facets, by
+  // Ordered by box, ties by index. When the boxes the facets span are no more than the facets, by
   // counting (one pass over the facets and one over the boxes, in facet order within a box);
   // otherwise by a parallel sort.
   constexpr std::uint64_t kAxis = (std::uint64_t{1} << 21) - 1;
