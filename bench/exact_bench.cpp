@@ -4,7 +4,6 @@
 //   build/release/bench/strata_bench --benchmark_filter=Exact
 #include <benchmark/benchmark.h>
 
-#include <numeric>
 #include <vector>
 
 #include "exact/exact_cut_internal.hpp"
@@ -18,11 +17,7 @@ using namespace strata;
 struct MiddleLayer {
   const IndexedMesh& mesh = bench::sample_model("sphere.stl").mesh;
   GridSpec grid = *make_grid(mesh.bounds(), GridOptions{});
-  std::vector<FacetIndex> facets = [this] {
-    std::vector<FacetIndex> all(mesh.triangles.size());
-    std::iota(all.begin(), all.end(), FacetIndex{0});
-    return all;
-  }();
+  std::vector<FacetIndex> facets = bench::all_facets(mesh);
   std::vector<std::int8_t> signs = exact::detail::facet_normal_x_signs(mesh);
   std::uint32_t k = grid.nz / 2;
 };

@@ -1,11 +1,14 @@
 #pragma once
 
-// The sample models of data/ the stage benchmarks run on, read and welded once a process.
+// The sample models of data/ the stage benchmarks run on, read and welded once a process, and
+// the list of a model's facets a stage takes when no sweep has narrowed them.
 
 #include <map>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "strata/io/read_mesh.hpp"
 #include "strata/mesh/weld_vertices.hpp"
@@ -28,6 +31,13 @@ inline const SampleModel& sample_model(const std::string& name) {
     it = cache.emplace(name, SampleModel{std::move(*soup), std::move(mesh)}).first;
   }
   return it->second;
+}
+
+/// Every facet of `mesh`, in order: a layer's candidates when no sweep has narrowed them.
+inline std::vector<FacetIndex> all_facets(const IndexedMesh& mesh) {
+  std::vector<FacetIndex> all(mesh.triangles.size());
+  std::iota(all.begin(), all.end(), FacetIndex{0});
+  return all;
 }
 
 }  // namespace strata::bench

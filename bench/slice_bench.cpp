@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "export/grey_png_internal.hpp"
 #include "sample_models.hpp"
@@ -73,8 +72,7 @@ BENCHMARK(BM_SliceRearCaseDistanceShell)->Arg(1)->Unit(benchmark::kMillisecond)-
 void BM_SliceLayerSegments(benchmark::State& state) {
   const IndexedMesh& mesh = model("real/rear_case.stl");
   const GridSpec grid = *make_grid(mesh.bounds(), GridOptions{});
-  std::vector<FacetIndex> all(mesh.triangles.size());
-  std::iota(all.begin(), all.end(), FacetIndex{0});
+  const std::vector<FacetIndex> all = bench::all_facets(mesh);
   std::uint32_t k = 0;
   for (auto _ : state) {
     benchmark::DoNotOptimize(slice_layer(mesh, all, grid, k));
@@ -99,8 +97,7 @@ BENCHMARK(BM_ShellSetupSphere)->Unit(benchmark::kMillisecond);
 void BM_ShellClassifyLayerSphere(benchmark::State& state) {
   const IndexedMesh& mesh = model("sphere.stl");
   const GridSpec grid = *make_grid(mesh.bounds(), GridOptions{});
-  std::vector<FacetIndex> all(mesh.triangles.size());
-  std::iota(all.begin(), all.end(), FacetIndex{0});
+  const std::vector<FacetIndex> all = bench::all_facets(mesh);
   const std::uint32_t k = grid.nz / 2;
   std::vector<std::vector<std::uint8_t>> solid;  // layers k - 1, k, k + 1
   for (std::uint32_t q = k - 1; q <= k + 1; ++q) {
