@@ -33,7 +33,7 @@ using Halfedge = Arrangement::Halfedge_const_handle;
 constexpr long long kUnset = std::numeric_limits<long long>::min();
 
 Point to_kernel(const ExactPoint2& p) {
-  return Point(Kernel::FT(p.x.exact), Kernel::FT(p.y.exact));
+  return Point(Kernel::FT(p.x.exact()), Kernel::FT(p.y.exact()));
 }
 
 ExactPoint2 from_kernel(const Point& p) {

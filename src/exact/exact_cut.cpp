@@ -9,55 +9,6 @@
 namespace strata::exact::detail {
 namespace {
 
-/// Exact crossing points, computed on integers: every double is an integer times a power of
-/// two, so with all inputs of one edge scaled to the smallest exponent E,
-///   x = 2^E (LX W + T (HX - LX)) / W,  W = HZ - LZ,  T = Z - LZ,
-/// needs four integer operations and one reduction a coordinate. Scratch values keep their
-/// storage from one point to the next.
-class CrossingCalculator {
- public:
-  /// Sets `out` to the crossing of the edge from lo (below z) to hi (at or above z).
-  void operator()(const Vec3& lo, const Vec3& hi, double z, ExactPoint2& out) {
-    if (hi.z == z) {
-      set_double(out.x, hi.x);
-      set_double(out.y, hi.y);
-      return;
-    }
-    int e = std::numeric_limits<int>::max();
-    for (const double v : {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z, z}) lower_to_last_bit(e, v);
-    set_scaled(lz_, lo.z, e);
-    set_scaled(w_, hi.z, e);
-    w_ -= lz_;
-    set_scaled(t_, z, e);
-    t_ -= lz_;
-    along(lo.x, hi.x, e, out.x);
-    along(lo.y, hi.y, e, out.y);
-  }
-
- private:
-  static void set_double(RoundedRational& out, double v) {
-    out.exact = v;
-    out.rounded = v + 0.0;  // the double itself, but -0 as +0, as the rational holds it
-  }
-
-  void along(double a, double b, int e, RoundedRational& out) {
-    if (a == b) {
-      set_double(out, a);
-      return;
-    }
-    set_scaled(la_, a, e);
-    set_scaled(lb_, b, e);
-    lb_ -= la_;  // HX - LX
-    lb_ *= t_;   // T (HX - LX)
-    la_ *= w_;   // LX W
-    la_ += lb_;  // numerator
-    set_scaled_quotient(out.exact, la_, w_, e);
-    out.rounded = round_to_double(out.exact);
-  }
-
-  mpz_class lz_, w_, t_, la_, lb_;
-};
-
 /// Point indices by crossed edge: open addressing on the edge's two vertex indices, sized for
 /// every candidate facet's two crossings, so a layer allocates its table once.
 class EdgePointTable {
@@ -117,7 +68,6 @@ ExactLayer cut_layer(const IndexedMesh& mesh, std::span<const FacetIndex> candid
   ExactLayer out;
   out.layer = layer;
   out.z_mm = z;
-  CrossingCalculator crossing_point;
   // A crossed edge is shared by two facets: its point is computed and stored once.
   EdgePointTable table(2 * candidates.size());
   out.points.reserve(2 * candidates.size());
@@ -128,8 +78,11 @@ ExactLayer cut_layer(const IndexedMesh& mesh, std::span<const FacetIndex> candid
     const std::uint32_t index =
         table.find_or_add(key, static_cast<std::uint32_t>(out.points.size()), added);
     if (added) {
-      crossing_point(mesh.vertices[edge.below], mesh.vertices[edge.above], z,
-                     out.points.emplace_back());
+      // Rounded now; the exact values only if a comparison ties.
+      const Vec3& lo = mesh.vertices[edge.below];
+      const Vec3& hi = mesh.vertices[edge.above];
+      out.points.push_back(
+          {RoundedRational::crossing(lo, hi, z, 0), RoundedRational::crossing(lo, hi, z, 1)});
     }
     return index;
   };

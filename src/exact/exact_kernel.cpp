@@ -46,15 +46,15 @@ class ExactPointGeometry {
     const ExactPoint2& pa = point(a);
     const ExactPoint2& pb = point(b);
     const ExactPoint2& pc = point(c);
-    const Rational r = (pb.x.exact - pa.x.exact) * (pc.y.exact - pa.y.exact) -
-                       (pb.y.exact - pa.y.exact) * (pc.x.exact - pa.x.exact);
+    const Rational r = (pb.x.exact() - pa.x.exact()) * (pc.y.exact() - pa.y.exact()) -
+                       (pb.y.exact() - pa.y.exact()) * (pc.x.exact() - pa.x.exact());
     return sign_of(r);
   }
   int exact_compare_x(strata::detail::SegmentEnd a, strata::detail::SegmentEnd b) const {
-    return sign_of(point(a).x.exact - point(b).x.exact);
+    return sign_of(point(a).x.exact() - point(b).x.exact());
   }
   int exact_compare_y(strata::detail::SegmentEnd a, strata::detail::SegmentEnd b) const {
-    return sign_of(point(a).y.exact - point(b).y.exact);
+    return sign_of(point(a).y.exact() - point(b).y.exact());
   }
 
  private:

@@ -9,7 +9,7 @@ namespace {
 using Point = Kernel::Point_2;
 
 Point to_kernel(const ExactPoint2& p) {
-  return Point(Kernel::FT(p.x.exact), Kernel::FT(p.y.exact));
+  return Point(Kernel::FT(p.x.exact()), Kernel::FT(p.y.exact()));
 }
 
 double shoelace(const std::vector<Point2>& points) {
@@ -61,7 +61,7 @@ int point_in_loop(const ExactPoint2& p, const Point& pk, const std::vector<Exact
   int winding = 0;
   const auto cmp_y = [](const ExactPoint2& a, const ExactPoint2& b) {
     if (a.y.rounded != b.y.rounded) return a.y.rounded < b.y.rounded ? -1 : 1;
-    return a.y.exact < b.y.exact ? -1 : (b.y.exact < a.y.exact ? 1 : 0);
+    return a.y.exact() < b.y.exact() ? -1 : (b.y.exact() < a.y.exact() ? 1 : 0);
   };
   for (std::size_t i = 0, n = loop.size(); i < n; ++i) {
     const std::size_t k = (i + 1) % n;
@@ -92,8 +92,8 @@ ExactPoint2 probe_of(const std::vector<ExactPoint2>& loop) {
     const ExactPoint2& a = loop[i];
     const ExactPoint2& b = loop[(i + 1) % n];
     if (compare_xy(a, b) != 0) {
-      return {RoundedRational((a.x.exact + b.x.exact) / 2),
-              RoundedRational((a.y.exact + b.y.exact) / 2)};
+      return {RoundedRational((a.x.exact() + b.x.exact()) / 2),
+              RoundedRational((a.y.exact() + b.y.exact()) / 2)};
     }
   }
   return loop.front();

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -29,26 +30,77 @@ void set_scaled(mpz_class& out, double v, int e);
 /// out = 2^e num / den, reduced. @pre den is not zero.
 void set_scaled_quotient(mpq_class& out, const mpz_class& num, const mpz_class& den, int e);
 
+/// The crossing of the edge from `lo` (below z) to `hi` (above z) with the plane at height z,
+/// on one axis: its exact value, and its nearest double without building that value (no rational
+/// is reduced or allocated). NaN when the nearest double lies below the normal range, where only
+/// the rational rounds it right.
+Rational exact_crossing(const Vec3& lo, const Vec3& hi, double z, int axis);
+double rounded_crossing(const Vec3& lo, const Vec3& hi, double z, int axis);
+
 /// An exact value with its nearest double, so comparisons with doubles are decided by the double
-/// unless they tie (rounding to nearest is monotone: round(q) < d implies q < d).
-struct RoundedRational {
-  Rational exact;
+/// unless they tie (rounding to nearest is monotone: round(q) < d implies q < d). A crossing's
+/// exact value is computed when first asked for: most comparisons never ask.
+class RoundedRational {
+ public:
   double rounded = 0.0;
 
+  /// Zero.
   RoundedRational() = default;
-  explicit RoundedRational(Rational q) : exact(std::move(q)), rounded(round_to_double(exact)) {}
-  RoundedRational(const RoundedRational&) = default;
-  RoundedRational& operator=(const RoundedRational&) = default;
-  // gmpxx's rational move allocates a fresh denominator and is not noexcept, so vectors of
-  // exact points would copy both rationals on every growth; GMP aborts rather than throws when
-  // an allocation fails, so the move cannot throw.
-  RoundedRational(RoundedRational&& other) noexcept
-      : exact(std::move(other.exact)), rounded(other.rounded) {}
-  RoundedRational& operator=(RoundedRational&& other) noexcept {
-    exact.swap(other.exact);
-    rounded = other.rounded;
+  explicit RoundedRational(Rational q)
+      : rounded(round_to_double(q)), exact_(std::make_unique<Rational>(std::move(q))) {}
+  /// The double v, exactly (-0 held as +0, as a rational holds it).
+  static RoundedRational of_double(double v) {
+    RoundedRational out;
+    out.rounded = v + 0.0;
+    return out;
+  }
+  /// The crossing of the edge from lo (below z) to hi (above z) with the plane z on `axis` (0
+  /// for x, 1 for y); the vertices must outlive this value.
+  static RoundedRational crossing(const Vec3& lo, const Vec3& hi, double z, int axis) {
+    const double rounded = rounded_crossing(lo, hi, z, axis);
+    if (std::isnan(rounded)) return RoundedRational(exact_crossing(lo, hi, z, axis));
+    RoundedRational out;
+    out.rounded = rounded;
+    out.lo_ = &lo;
+    out.hi_ = &hi;
+    out.z_ = z;
+    out.axis_ = axis;
+    return out;
+  }
+
+  // The rational, when there is one, is held apart: moving a value moves a pointer (gmpxx's
+  // rational move allocates, and is not noexcept), and the many values that never need it
+  // stay small.
+  RoundedRational(const RoundedRational& other)
+      : rounded(other.rounded),
+        exact_(other.exact_ ? std::make_unique<Rational>(*other.exact_) : nullptr),
+        lo_(other.lo_),
+        hi_(other.hi_),
+        z_(other.z_),
+        axis_(other.axis_) {}
+  RoundedRational& operator=(const RoundedRational& other) {
+    if (this != &other) *this = RoundedRational(other);
     return *this;
   }
+  RoundedRational(RoundedRational&&) noexcept = default;
+  RoundedRational& operator=(RoundedRational&&) noexcept = default;
+
+  /// The exact value (computed on the first call; not to be called from two threads at once).
+  const Rational& exact() const {
+    if (!exact_) {
+      exact_ = std::make_unique<Rational>(lo_ != nullptr ? exact_crossing(*lo_, *hi_, z_, axis_)
+                                                         : Rational(rounded));
+    }
+    return *exact_;
+  }
+
+ private:
+  mutable std::unique_ptr<Rational> exact_;
+  // The crossing the value is, while exact_ is not computed; no crossing: the double `rounded`.
+  const Vec3* lo_ = nullptr;
+  const Vec3* hi_ = nullptr;
+  double z_ = 0.0;
+  int axis_ = 0;
 };
 
 /// Sign of (q - d), exact.

@@ -55,10 +55,10 @@ TEST(CutLayer, HoldsOnePointPerCrossedEdgeAtItsExactCrossing) {
       const Vec3& lo = mesh.vertices[edge.below];
       const Vec3& hi = mesh.vertices[edge.above];
       const ExactPoint2& p = layer.points[index];
-      EXPECT_EQ(p.x.exact, crossing(lo.x, hi.x, lo.z, hi.z, z));
-      EXPECT_EQ(p.y.exact, crossing(lo.y, hi.y, lo.z, hi.z, z));
-      EXPECT_TRUE(is_nearest(p.x.exact, p.x.rounded));
-      EXPECT_TRUE(is_nearest(p.y.exact, p.y.rounded));
+      EXPECT_EQ(p.x.exact(), crossing(lo.x, hi.x, lo.z, hi.z, z));
+      EXPECT_EQ(p.y.exact(), crossing(lo.y, hi.y, lo.z, hi.z, z));
+      EXPECT_TRUE(is_nearest(p.x.exact(), p.x.rounded));
+      EXPECT_TRUE(is_nearest(p.y.exact(), p.y.rounded));
     }
   }
   for (std::size_t p = 0; p < layer.points.size(); ++p) {
@@ -88,16 +88,16 @@ TEST(ChainLayer, APointThatStartsTwoSegmentsIsInBothLoops) {
     int shared = 0;
     mpq_class x_sum = 0;
     for (const ExactPoint2& p : loop.points) {
-      if (p.x.exact == 1 && p.y.exact == 1) ++shared;
-      EXPECT_TRUE(is_nearest(p.x.exact, p.x.rounded));
-      x_sum += p.x.exact;
+      if (p.x.exact() == 1 && p.y.exact() == 1) ++shared;
+      EXPECT_TRUE(is_nearest(p.x.exact(), p.x.rounded));
+      x_sum += p.x.exact();
     }
     EXPECT_EQ(shared, 1);
     // Every point of a loop is one of its box's: x all in [0, 1] or all in [1, 2].
     const bool first_box = x_sum <= mpq_class(static_cast<long>(loop.points.size()));
     for (const ExactPoint2& p : loop.points) {
-      EXPECT_TRUE(first_box ? (p.x.exact >= 0 && p.x.exact <= 1)
-                            : (p.x.exact >= 1 && p.x.exact <= 2));
+      EXPECT_TRUE(first_box ? (p.x.exact() >= 0 && p.x.exact() <= 1)
+                            : (p.x.exact() >= 1 && p.x.exact() <= 2));
     }
   }
 }

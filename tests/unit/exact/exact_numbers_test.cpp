@@ -14,6 +14,8 @@
 #include <limits>
 #include <random>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 #include "exact/exact_numbers_internal.hpp"
 #include "support/nearest_double.hpp"
@@ -176,6 +178,126 @@ TEST(CompareXy, ComparesXThenYExactly) {
   EXPECT_EQ(compare_xy(point(one, one), point(one, one_up)), -1);
   EXPECT_EQ(compare_xy(point(one, one_up), point(one, one)), 1);
   EXPECT_EQ(compare_xy(point(one, 3), point(one, 3)), 0);
+}
+
+/// The crossing of the edge lo-hi with the plane z on one axis, on rationals as written.
+mpq_class crossing_as_written(const Vec3& lo, const Vec3& hi, double z, int axis) {
+  const double a = axis == 0 ? lo.x : lo.y;
+  const double b = axis == 0 ? hi.x : hi.y;
+  return mpq_class(a) + (mpq_class(z) - lo.z) / (mpq_class(hi.z) - lo.z) * (mpq_class(b) - a);
+}
+
+/// Checks both axes of the crossing: its double is the rational's nearest (ties to even, below
+/// the normal range too), and its exact value is the rational.
+void expect_crossing(const Vec3& lo, const Vec3& hi, double z) {
+  for (const int axis : {0, 1}) {
+    const mpq_class expected = crossing_as_written(lo, hi, z, axis);
+    const RoundedRational value = RoundedRational::crossing(lo, hi, z, axis);
+    ASSERT_EQ(value.rounded, rounded(expected)) << expected.get_str() << " axis " << axis;
+    if (value.rounded == 0.0) {
+      ASSERT_FALSE(std::signbit(value.rounded)) << "zero is +0, as the rational holds it";
+    }
+    ASSERT_EQ(value.exact(), expected) << "axis " << axis;
+  }
+}
+
+double random_float(std::mt19937_64& random, double scale) {
+  return static_cast<float>(std::uniform_real_distribution<double>(-scale, scale)(random));
+}
+
+TEST(RoundedCrossing, IsTheNearestDoubleOfAFloatEdgeAndADoublePlane) {
+  // A mesh's floats and a plane z0 + k dz: the machine-integer case, with coordinates near zero
+  // beside large ones, and whole coordinates.
+  std::mt19937_64 random(20261128);
+  for (int i = 0; i < 20000; ++i) {
+    const double scale = std::ldexp(1.0, static_cast<int>(random() % 24) - 8);
+    Vec3 lo{random_float(random, scale), random_float(random, scale), random_float(random, scale)};
+    Vec3 hi{random_float(random, scale), random_float(random, scale), random_float(random, scale)};
+    if (i % 5 == 0) lo.x = static_cast<float>(lo.x * 1e-6);
+    if (i % 7 == 0) hi.y = std::round(hi.y);
+    if (lo.z == hi.z) continue;
+    if (lo.z > hi.z) std::swap(lo, hi);
+    const double z0 = -scale;
+    const double dz = scale / 997.0;
+    const double k = std::ceil((lo.z - z0) / dz);
+    const double z = z0 + k * dz;
+    if (!(z > lo.z && z <= hi.z)) continue;
+    expect_crossing(lo, hi, z);
+  }
+}
+
+TEST(RoundedCrossing, BreaksTiesToEvenAndRoundsNearTiesEitherWay) {
+  // Halfway up an edge between two neighbouring doubles, the crossing is their midpoint; a
+  // plane a little lower or higher moves it a hair off the midpoint.
+  std::mt19937_64 random(11);
+  for (int i = 0; i < 5000; ++i) {
+    // Mantissas of 53 bits from 2^-1 to 2^8 (on machine integers beside the planes near 1),
+    // and smaller ones (not).
+    const int k =
+        i % 2 == 0 ? static_cast<int>(random() % 10) - 53 : static_cast<int>(random() % 80) - 140;
+    const double a =
+        std::ldexp(static_cast<double>((std::uint64_t{1} << 52) | (random() >> 12)), k);
+    const double b = std::nextafter(a, HUGE_VAL);
+    const Vec3 lo{a, -b, 0.0};
+    const Vec3 hi{b, -a, 2.0};
+    expect_crossing(lo, hi, 1.0);
+    expect_crossing(lo, hi, std::nextafter(1.0, 0.0));
+    expect_crossing(lo, hi, std::nextafter(1.0, 2.0));
+  }
+}
+
+TEST(RoundedCrossing, IsTheNearestDoubleOverAnyRangeOfExponents) {
+  // Coordinates of very different sizes (integers too wide for the machine's), and crossings
+  // that fall below the normal range, where the rational rounds them.
+  std::mt19937_64 random(5);
+  const auto any = [&] {
+    const double m = std::uniform_real_distribution<double>(-1.0, 1.0)(random);
+    return std::ldexp(m, static_cast<int>(random() % 2090) - 1070);  // finite
+  };
+  for (int i = 0; i < 20000; ++i) {
+    Vec3 lo{any(), any(), any()};
+    Vec3 hi{any(), any(), any()};
+    if (i % 3 == 0) {
+      // Both ends below the normal range on one axis.
+      lo.x = std::ldexp(lo.x, -60);
+      hi.x = std::ldexp(hi.x, -60);
+    }
+    if (lo.z == hi.z) continue;
+    if (lo.z > hi.z) std::swap(lo, hi);
+    const double z = i % 2 == 0 ? hi.z : lo.z + (hi.z - lo.z) * 0.375;
+    if (!(z > lo.z && z <= hi.z)) continue;
+    expect_crossing(lo, hi, z);
+  }
+  expect_crossing({kMinSubnormal, 0.0, 0.0}, {4 * kMinSubnormal, 1.0, 3.0}, 1.0);
+  expect_crossing({-kMinSubnormal, 0.0, -1.0}, {kMinSubnormal, 1e300, 1.0}, 0.0);
+}
+
+TEST(RoundedRational, KeepsACrossingsExactValueThroughCopiesAndMoves) {
+  const Vec3 lo{0.1, 0.2, 0.0};
+  const Vec3 hi{0.7, -0.3, 0.9};
+  const mpq_class expected = crossing_as_written(lo, hi, 0.3, 0);
+  std::vector<RoundedRational> values;
+  for (int i = 0; i < 40; ++i) {
+    values.push_back(RoundedRational::crossing(lo, hi, 0.3, 0));
+    if (i % 2 == 0) {
+      EXPECT_EQ(values.back().exact(), expected);  // computed before the moves
+    }
+  }
+  RoundedRational assigned = RoundedRational::of_double(5.0);
+  ASSERT_EQ(assigned.exact(), 5);
+  assigned = values[1];
+  RoundedRational moved_into = RoundedRational::of_double(-0.0);
+  moved_into = std::move(values[2]);
+  for (const RoundedRational& v : values) {
+    if (&v == &values[2]) continue;
+    EXPECT_EQ(v.exact(), expected);
+    EXPECT_EQ(v.rounded, rounded(expected));
+  }
+  EXPECT_EQ(assigned.exact(), expected);
+  EXPECT_EQ(moved_into.exact(), expected);
+  EXPECT_EQ(RoundedRational::of_double(-0.0).exact(), 0);
+  EXPECT_FALSE(std::signbit(RoundedRational::of_double(-0.0).rounded));
+  EXPECT_EQ(RoundedRational().exact(), 0);
 }
 
 }  // namespace
