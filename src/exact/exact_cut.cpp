@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "exact/exact_cut_internal.hpp"
+#include "predicates/crossing_predicates.hpp"
 
 namespace strata::exact::detail {
 namespace {
@@ -49,16 +50,13 @@ class EdgePointTable {
 }  // namespace
 
 std::vector<std::int8_t> facet_normal_x_signs(const IndexedMesh& mesh) {
-  // n.x = (b.y - a.y)(c.z - a.z) - (b.z - a.z)(c.y - a.y): the orientation of the facet projected
-  // on the (y, z) plane, taken by CGAL's filtered predicate.
+  // The fast path's exact predicate: n.x = (b.y - a.y)(c.z - a.z) - (b.z - a.z)(c.y - a.y),
+  // the orientation of the facet projected on the (y, z) plane.
   std::vector<std::int8_t> signs(mesh.triangles.size());
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const Vec3& a = mesh.corner(static_cast<FacetIndex>(f), 0);
-    const Vec3& b = mesh.corner(static_cast<FacetIndex>(f), 1);
-    const Vec3& c = mesh.corner(static_cast<FacetIndex>(f), 2);
-    const CGAL::Orientation o = CGAL::orientation(
-        Kernel::Point_2(a.y, a.z), Kernel::Point_2(b.y, b.z), Kernel::Point_2(c.y, c.z));
-    signs[f] = static_cast<std::int8_t>(o == CGAL::POSITIVE ? 1 : (o == CGAL::NEGATIVE ? -1 : 0));
+    const auto facet = static_cast<FacetIndex>(f);
+    signs[f] = static_cast<std::int8_t>(strata::detail::normal_x_sign(
+        mesh.corner(facet, 0), mesh.corner(facet, 1), mesh.corner(facet, 2)));
   }
   return signs;
 }
