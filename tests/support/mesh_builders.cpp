@@ -1,5 +1,6 @@
 #include "support/mesh_builders.hpp"
 
+#include <numeric>
 #include <utility>
 
 #include "strata/mesh/primitive_models.hpp"
@@ -39,6 +40,12 @@ void append_mesh(IndexedMesh& to, const IndexedMesh& from) {
   const auto base = static_cast<VertexIndex>(to.vertices.size());
   to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
   for (auto t : from.triangles) to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
+
+std::vector<FacetIndex> all_facets(const IndexedMesh& mesh) {
+  std::vector<FacetIndex> facets(mesh.triangles.size());
+  std::iota(facets.begin(), facets.end(), FacetIndex{0});
+  return facets;
 }
 
 Facet reversed(const Facet& facet) { return {facet[0], facet[2], facet[1]}; }

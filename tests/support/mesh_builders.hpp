@@ -31,6 +31,10 @@ IndexedMesh welded_box(const Vec3& min, const Vec3& max);
 /// vertices).
 void append_mesh(IndexedMesh& to, const IndexedMesh& from);
 
+/// The indices of every facet of `mesh`, in order: what a stage that takes candidate facets is
+/// given when every facet is a candidate.
+std::vector<FacetIndex> all_facets(const IndexedMesh& mesh);
+
 /// The facet with its orientation reversed (corners 1 and 2 swapped).
 Facet reversed(const Facet& facet);
 

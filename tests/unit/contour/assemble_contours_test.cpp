@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numeric>
 #include <vector>
 
 #include "strata/io/read_mesh.hpp"
@@ -20,9 +19,7 @@ LayerSegments cut(const IndexedMesh& mesh, double z) {
   grid.z0 = z - 0.5;
   grid.dz = 1.0;
   grid.nz = 1;
-  std::vector<FacetIndex> facets(mesh.triangles.size());
-  std::iota(facets.begin(), facets.end(), 0);
-  return slice_layer(mesh, facets, grid, 0);
+  return slice_layer(mesh, test::all_facets(mesh), grid, 0);
 }
 
 IndexedMesh two_boxes(Vec3 lo_a, Vec3 hi_a, Vec3 lo_b, Vec3 hi_b) {

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -13,15 +12,10 @@
 #include "exact/exact_soup_internal.hpp"
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
+#include "support/mesh_builders.hpp"
 
 namespace strata::exact::detail {
 namespace {
-
-std::vector<FacetIndex> all_facets(const IndexedMesh& mesh) {
-  std::vector<FacetIndex> facets(mesh.triangles.size());
-  std::iota(facets.begin(), facets.end(), FacetIndex{0});
-  return facets;
-}
 
 /// Whether d is a double nearest to q.
 bool is_nearest(const mpq_class& q, double d) {
@@ -43,7 +37,8 @@ TEST(CutLayer, HoldsOnePointPerCrossedEdgeAtItsExactCrossing) {
   // plane lies off the vertices, so the side walls' diagonals are crossed inside.
   const IndexedMesh mesh = weld_vertices(mesh::make_ring(10.0, 6.0, 3.0, 24));
   const double z = 1.1;
-  const ExactLayer layer = cut_layer(mesh, all_facets(mesh), facet_normal_x_signs(mesh), 0, z);
+  const ExactLayer layer =
+      cut_layer(mesh, test::all_facets(mesh), facet_normal_x_signs(mesh), 0, z);
   ASSERT_EQ(layer.segments.size(), 96u);  // 24 sectors, two triangles on each of two walls
   EXPECT_EQ(layer.points.size(), layer.segments.size());
   std::vector<int> starts(layer.points.size(), 0);
@@ -75,7 +70,7 @@ TEST(ChainLayer, APointThatStartsTwoSegmentsIsInBothLoops) {
   soup.triangles.insert(soup.triangles.end(), second.triangles.begin(), second.triangles.end());
   const IndexedMesh mesh = weld_vertices(soup);
   ASSERT_EQ(mesh.vertices.size(), 14u);  // the shared edge's two vertices are welded
-  ExactLayer layer = cut_layer(mesh, all_facets(mesh), facet_normal_x_signs(mesh), 0, 0.5);
+  ExactLayer layer = cut_layer(mesh, test::all_facets(mesh), facet_normal_x_signs(mesh), 0, 0.5);
   std::vector<int> starts(layer.points.size(), 0);
   for (const ExactSegment& s : layer.segments) ++starts[s.start];
   ASSERT_EQ(std::count(starts.begin(), starts.end(), 2), 1);

@@ -6,11 +6,11 @@
 #include <bit>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 #include "exact/exact_cut_internal.hpp"
 #include "exact/exact_fill_internal.hpp"
 #include "exact_test_support.hpp"
+#include "support/mesh_builders.hpp"
 
 namespace strata::exact_test {
 namespace {
@@ -50,8 +50,7 @@ TEST(ExactFill, ACrossingAmongTheSubnormalDoublesIsThatDoubleExactly) {
 std::uint64_t expect_fill_without_hatches_agrees(const IndexedMesh& mesh, const GridSpec& grid,
                                                  FillRule rule, double scan_offset = 0.0) {
   using namespace exact::detail;
-  std::vector<FacetIndex> facets(mesh.triangles.size());
-  std::iota(facets.begin(), facets.end(), FacetIndex{0});
+  const std::vector<FacetIndex> facets = test::all_facets(mesh);
   const std::vector<std::int8_t> signs = facet_normal_x_signs(mesh);
   std::uint64_t fallbacks = 0;
   std::uint64_t crossings = 0;

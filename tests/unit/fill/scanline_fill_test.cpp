@@ -2,8 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <numeric>
-
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
 #include "strata/slice/slice_float.hpp"
@@ -15,9 +13,7 @@ namespace {
 LayerFill fill_layer(const IndexedMesh& mesh, const GridSpec& grid, std::uint32_t k,
                      FillRule rule = FillRule::NonZero, double offset = 0.0,
                      FillWanted wanted = {}) {
-  std::vector<FacetIndex> all(mesh.triangles.size());
-  std::iota(all.begin(), all.end(), FacetIndex{0});
-  const LayerSegments segments = slice_layer(mesh, all, grid, k);
+  const LayerSegments segments = slice_layer(mesh, test::all_facets(mesh), grid, k);
   return scanline_fill(mesh, segments, grid, rule, offset, wanted);
 }
 
