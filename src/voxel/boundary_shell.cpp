@@ -490,14 +490,19 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
     if (patch.zmax < z_lo) continue;
     const auto [pi0, pi1] = x_axis.centres_within(patch.vertex_lo.x - t, patch.vertex_hi.x + t);
     const auto [pj0, pj1] = y_axis.centres_within(patch.vertex_lo.y - t, patch.vertex_hi.y + t);
-    // Boxes wider than a word or taller than the words kept are left to the facets.
-    if (pi0 > pi1 || pj0 > pj1 || pi1 - pi0 >= 64 || pj1 - pj0 >= kMaxPatchRows) continue;
-    std::uint64_t interior[kMaxPatchRows];
-    const std::int64_t rows = pj1 - pj0 + 1;
-    gather_interior(out, pi0, pi1, pj0, rows, interior);
-    mark_near_vertices(std::span(vertices_by_patch_)
-                           .subspan(patch.vertex_begin, patch.vertex_end - patch.vertex_begin),
-                       z, pi0, pi1, pj0, rows, interior, out);
+    const auto vertices = std::span(vertices_by_patch_)
+                              .subspan(patch.vertex_begin, patch.vertex_end - patch.vertex_begin);
+    // A box wider than a word or taller than the words kept (a shell many cells thick) is taken
+    // a tile of them at a time.
+    const auto mark_tile = [&](std::int64_t ti0, std::int64_t ti1, std::int64_t tj0,
+                               std::int64_t rows) {
+      std::uint64_t interior[kMaxPatchRows];
+      gather_interior(out, ti0, ti1, tj0, rows, interior);
+      if (std::any_of(interior, interior + rows, [](std::uint64_t w) { return w != 0; })) {
+        mark_near_vertices(vertices, z, ti0, ti1, tj0, rows, interior, out);
+      }
+    };
+    for_each_tile(pi0, pi1, pj0, pj1, mark_tile);
   }
   constexpr double kNarrowFromCells = 8.0;
   // Every facet's reach lies within the box of the patch's corners widened by t (the margin
@@ -570,19 +575,26 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
     pj0 = std::min(pj0, m.j0);
     pj1 = std::max(pj1, m.j1);
   }
-  if (pi1 - pi0 >= 64) {
-    // Wider than a word: each facet over its own box.
-    std::optional<detail::TriangleDistanceFilter> filter;
-    for (const FacetReach& facet : facets) {
-      filter.reset();
-      mark_cell_by_cell(facet, facet.j0, z, filter, out);
-    }
-    return;
-  }
+  // A tile of words at a time, each facet over the part of its box in the tile.
   Candidates candidates;
-  gather_candidates(pi0, pi1, pj0, std::min<std::int64_t>(pj1 - pj0 + 1, kMaxPatchRows), slab, z,
-                    out, candidates);
-  test_candidates(facets, candidates, z, out);
+  std::vector<FacetReach> in_tile;
+  const auto test_tile = [&](std::int64_t ti0, std::int64_t ti1, std::int64_t tj0,
+                             std::int64_t rows) {
+    gather_candidates(ti0, ti1, tj0, rows, slab, z, out, candidates);
+    if (candidates.none()) return;
+    const std::int64_t tj1 = tj0 + rows - 1;
+    in_tile.clear();
+    for (const FacetReach& f : facets) {
+      if (f.i1 < ti0 || f.i0 > ti1 || f.j1 < tj0 || f.j0 > tj1) continue;
+      in_tile.push_back({{f.corner[0], f.corner[1], f.corner[2]},
+                         std::max(f.i0, ti0),
+                         std::min(f.i1, ti1),
+                         std::max(f.j0, tj0),
+                         std::min(f.j1, tj1)});
+    }
+    test_candidates(in_tile, candidates, z, out);
+  };
+  for_each_tile(pi0, pi1, pj0, pj1, test_tile);
 }
 
 void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::int64_t pj0,
@@ -650,7 +662,6 @@ void BoundaryShell::test_candidates(std::span<const FacetReach> facets, Candidat
   const std::int64_t pi0 = candidates.pi0;
   const std::int64_t pj0 = candidates.pj0;
   std::uint64_t* interior = candidates.interior;
-  const std::int64_t beyond_words = pj0 + kMaxPatchRows;
   std::optional<detail::TriangleDistanceFilter> filter;
   for (const FacetReach& facet : facets) {
     filter.reset();
@@ -667,22 +678,6 @@ void BoundaryShell::test_candidates(std::span<const FacetReach> facets, Candidat
           out[static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i)] = CellClass::Boundary;
           interior[r] &= ~(std::uint64_t{1} << bit);
         }
-      }
-    }
-    // A patch taller than the words kept: the rows beyond, cell by cell.
-    mark_cell_by_cell(facet, std::max(facet.j0, beyond_words), z, filter, out);
-  }
-}
-
-void BoundaryShell::mark_cell_by_cell(const FacetReach& facet, std::int64_t j_begin, double z,
-                                      std::optional<detail::TriangleDistanceFilter>& filter,
-                                      std::vector<CellClass>& out) const {
-  for (std::int64_t j = j_begin; j <= facet.j1; ++j) {
-    CellClass* row = out.data() + static_cast<std::size_t>(j) * grid_.nx;
-    for (std::int64_t i = facet.i0; i <= facet.i1; ++i) {
-      if (row[i] == CellClass::Interior &&
-          facet_closer_than(filter, facet.corner, thickness_mm_, cell_centre(i, j, z))) {
-        row[i] = CellClass::Boundary;
       }
     }
   }

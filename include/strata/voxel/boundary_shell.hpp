@@ -1,11 +1,11 @@
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <limits>
 #include <memory>
-#include <optional>
 #include <span>
 #include <vector>
 
@@ -15,10 +15,6 @@
 #include "strata/voxel/cell_class.hpp"
 
 namespace strata {
-
-namespace detail {
-class TriangleDistanceFilter;
-}
 
 /// Returns the solid bitmap (nx * ny bytes) of layer k, or nullptr when k lies outside the grid
 /// (outside counts as empty). Layers within reach_layers() of the one being classified must be
@@ -83,24 +79,28 @@ class BoundaryShell {
       return facet.i0 >= pi0 && facet.i1 < pi0 + 64 && facet.j0 >= pj0 && facet.j1 < pj0 + rows;
     }
   };
-  /// The small facets of a patch, tested over the box they reach together; `slab` holds the
-  /// patch's facets.
+  /// Calls visit(i0, i1, j0, rows) for the tiles of at most 64 columns by kMaxPatchRows rows
+  /// that cover columns pi0 .. pi1 and rows pj0 .. pj1 (none when either range is empty).
+  template <class Visit>
+  static void for_each_tile(std::int64_t pi0, std::int64_t pi1, std::int64_t pj0, std::int64_t pj1,
+                            const Visit& visit) {
+    for (std::int64_t j0 = pj0; j0 <= pj1; j0 += kMaxPatchRows) {
+      const std::int64_t rows = std::min(pj1 - j0 + 1, kMaxPatchRows);
+      for (std::int64_t i0 = pi0; i0 <= pi1; i0 += 64) visit(i0, std::min(pi1, i0 + 63), j0, rows);
+    }
+  }
+  /// The small facets of a patch, tested over the box they reach together, a tile at a time;
+  /// `slab` holds the patch's facets.
   void mark_near_small_facets(std::span<const FacetReach> facets, const Slab& slab, double z,
                               std::vector<CellClass>& out) const;
   /// The candidates of columns pi0 .. pi1 (at most 64) and `rows` rows from pj0.
   void gather_candidates(std::int64_t pi0, std::int64_t pi1, std::int64_t pj0, std::int64_t rows,
                          const Slab& slab, double z, const std::vector<CellClass>& out,
                          Candidates& candidates) const;
-  /// Tests the facets on the candidates their boxes hold (boxes that `candidates` hold, but for
-  /// rows beyond its words, taken cell by cell), marking those closer than t and clearing their
-  /// bits.
+  /// Tests the facets on the candidates of their boxes (boxes that `candidates` hold), marking
+  /// those closer than t and clearing their bits.
   void test_candidates(std::span<const FacetReach> facets, Candidates& candidates, double z,
                        std::vector<CellClass>& out) const;
-  /// Tests a facet on the interior cells of rows j_begin .. facet.j1 of its box one by one, and
-  /// marks those closer than t; `filter` is the facet's, built on the first test.
-  void mark_cell_by_cell(const FacetReach& facet, std::int64_t j_begin, double z,
-                         std::optional<detail::TriangleDistanceFilter>& filter,
-                         std::vector<CellClass>& out) const;
   Vec3 cell_centre(std::int64_t i, std::int64_t j, double z) const {
     return {grid_.xc(static_cast<std::uint32_t>(i)), grid_.yc(static_cast<std::uint32_t>(j)), z};
   }

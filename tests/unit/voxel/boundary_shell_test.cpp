@@ -159,6 +159,20 @@ TEST(BoundaryShell, ALoneFacetInsideTheSolidHasTheShellItsEdgesAndCornersReach) 
   EXPECT_GT(expect_shell_by_definition(weld_vertices(soup), 0.25, 0.9), 100u);
 }
 
+TEST(BoundaryShell, AShellManyCellsThickIsItsDefinitionAcrossTheTilesOfItsReach) {
+  // A shell of 30 cells about a small ball of small facets inside the solid: the boxes that a
+  // patch's vertices and facets reach (about 75 cells a side) are taken in tiles of 64 columns by
+  // 64 rows, and the cells of the far tiles are boundary by the ball's facets alone (the side
+  // walls' shells lie farther away).
+  TriangleSoup soup = mesh::make_box({0, 0, 0}, {16, 16, 10});
+  TriangleSoup ball = rotated(mesh::make_sphere(0.7, 2), 0.3, 0.1, 0.2);
+  for (auto& t : ball.triangles) {
+    for (Vec3& p : t) p = {p.x + 8.0, p.y + 8.0, p.z + 5.0};
+  }
+  soup.triangles.insert(soup.triangles.end(), ball.triangles.begin(), ball.triangles.end());
+  EXPECT_GT(expect_shell_by_definition(weld_vertices(soup), 0.1, 3.0, 13), 10000u);
+}
+
 TEST(BoundaryShell, ACellExactlyTFromAVertexIsNotInTheShell) {
   // Cells near a vertex are marked by its distance before any facet tests them, with a bound on
   // the rounding: a centre exactly t from the vertex must stay interior. A small lone facet
