@@ -12,6 +12,7 @@
 #include "exact/exact_soup_internal.hpp"
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
+#include "support/exact_crossing.hpp"
 #include "support/mesh_builders.hpp"
 
 namespace strata::exact::detail {
@@ -24,12 +25,6 @@ bool is_nearest(const mpq_class& q, double d) {
     if (abs(q - mpq_class(std::nextafter(d, toward))) < gap) return false;
   }
   return true;
-}
-
-/// The crossing of the edge lo-hi with the plane z, on rationals as written.
-mpq_class crossing(double lo, double hi, double lo_z, double hi_z, double z) {
-  return mpq_class(lo) +
-         (mpq_class(z) - lo_z) / (mpq_class(hi_z) - lo_z) * (mpq_class(hi) - mpq_class(lo));
 }
 
 TEST(CutLayer, HoldsOnePointPerCrossedEdgeAtItsExactCrossing) {
@@ -50,8 +45,8 @@ TEST(CutLayer, HoldsOnePointPerCrossedEdgeAtItsExactCrossing) {
       const Vec3& lo = mesh.vertices[edge.below];
       const Vec3& hi = mesh.vertices[edge.above];
       const ExactPoint2& p = layer.points[index];
-      EXPECT_EQ(p.x.exact(), crossing(lo.x, hi.x, lo.z, hi.z, z));
-      EXPECT_EQ(p.y.exact(), crossing(lo.y, hi.y, lo.z, hi.z, z));
+      EXPECT_EQ(p.x.exact(), test::crossing_as_written(lo, hi, z, 0));
+      EXPECT_EQ(p.y.exact(), test::crossing_as_written(lo, hi, z, 1));
       EXPECT_TRUE(is_nearest(p.x.exact(), p.x.rounded));
       EXPECT_TRUE(is_nearest(p.y.exact(), p.y.rounded));
     }

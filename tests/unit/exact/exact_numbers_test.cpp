@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "exact/exact_numbers_internal.hpp"
+#include "support/exact_crossing.hpp"
 #include "support/nearest_double.hpp"
 
 namespace strata::exact::detail {
@@ -180,18 +181,11 @@ TEST(CompareXy, ComparesXThenYExactly) {
   EXPECT_EQ(compare_xy(point(one, 3), point(one, 3)), 0);
 }
 
-/// The crossing of the edge lo-hi with the plane z on one axis, on rationals as written.
-mpq_class crossing_as_written(const Vec3& lo, const Vec3& hi, double z, int axis) {
-  const double a = axis == 0 ? lo.x : lo.y;
-  const double b = axis == 0 ? hi.x : hi.y;
-  return mpq_class(a) + (mpq_class(z) - lo.z) / (mpq_class(hi.z) - lo.z) * (mpq_class(b) - a);
-}
-
 /// Checks both axes of the crossing: its double is the rational's nearest (ties to even, below
 /// the normal range too), and its exact value is the rational.
 void expect_crossing(const Vec3& lo, const Vec3& hi, double z) {
   for (const int axis : {0, 1}) {
-    const mpq_class expected = crossing_as_written(lo, hi, z, axis);
+    const mpq_class expected = test::crossing_as_written(lo, hi, z, axis);
     const RoundedRational value = RoundedRational::crossing(lo, hi, z, axis);
     ASSERT_EQ(value.rounded, rounded(expected)) << expected.get_str() << " axis " << axis;
     if (value.rounded == 0.0) {
@@ -275,7 +269,7 @@ TEST(RoundedCrossing, IsTheNearestDoubleOverAnyRangeOfExponents) {
 TEST(RoundedRational, KeepsACrossingsExactValueThroughCopiesAndMoves) {
   const Vec3 lo{0.1, 0.2, 0.0};
   const Vec3 hi{0.7, -0.3, 0.9};
-  const mpq_class expected = crossing_as_written(lo, hi, 0.3, 0);
+  const mpq_class expected = test::crossing_as_written(lo, hi, 0.3, 0);
   std::vector<RoundedRational> values;
   for (int i = 0; i < 40; ++i) {
     values.push_back(RoundedRational::crossing(lo, hi, 0.3, 0));
