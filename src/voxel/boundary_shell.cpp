@@ -706,8 +706,9 @@ void BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, double z,
   // |p - v|^2 is a sum of three squares of rounded differences: its computed value is within
   // 8 u of the true one, and t * t within u of t^2. The 1e-12 margins cover both by far, so
   // this holds only where the true |p - v| is less than t. The ranges of rows and cells are
-  // guesses: a run's two ends are checked, and the distance is convex along the row, so every
-  // cell between them is closer too; a cell a guess leaves out is left to the facets.
+  // guesses: the first and last interior cell of a run are checked, and the distance is convex
+  // along the row, so every cell between them is closer too; a cell a guess leaves out is left
+  // to the facets.
   const double accept_below = t2 * (1.0 - 1e-12);
   const auto certainly_closer = [&](double dx, double dyz2) {
     return (dx * dx + dyz2) * (1.0 + 1e-12) < accept_below;
@@ -720,10 +721,11 @@ void BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, double z,
     const auto [j0, j1] = y_axis.centres_within(v.y - reach, v.y + reach);
     const std::int64_t r0 = std::max<std::int64_t>(j0 - pj0, 0);
     const std::int64_t r1 = std::min<std::int64_t>(j1 - pj0, rows - 1);
+    if (r0 > r1) continue;
     const auto [c0, c1] = x_axis.centres_within(v.x - reach, v.x + reach);
     const std::int64_t b0 = std::max(c0, pi0);
     const std::int64_t b1 = std::min(c1, pi1);
-    if (r0 > r1 || b0 > b1) continue;
+    if (b0 > b1) continue;
     // The columns the vertex reaches: a row with no interior cell among them is passed by
     // (most rows, once the first vertices of the patch have marked their cells).
     const std::uint64_t reached = run_bits(b0, b1, pi0);
@@ -734,19 +736,22 @@ void BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, double z,
       const double h2 = t2 - dyz2;
       if (!(h2 > 0.0)) continue;
       const double h = std::sqrt(h2);
-      auto [i0, i1] = x_axis.centres_within(v.x - h, v.x + h);
-      i0 = std::max(i0, b0);
-      i1 = std::min(i1, b1);
-      while (i0 <= i1 && !certainly_closer(grid_.xc(static_cast<std::uint32_t>(i0)) - v.x, dyz2)) {
-        ++i0;
-      }
-      while (i1 > i0 && !certainly_closer(grid_.xc(static_cast<std::uint32_t>(i1)) - v.x, dyz2)) {
-        --i1;
-      }
+      const auto [g0, g1] = x_axis.centres_within(v.x - h, v.x + h);
+      const std::int64_t i0 = std::max(g0, b0);
+      const std::int64_t i1 = std::min(g1, b1);
       if (i0 > i1) continue;
-      const std::uint64_t run = run_bits(i0, i1, pi0);
-      std::uint64_t hits = interior[r] & run;
-      interior[r] &= ~run;
+      // The interior cells of the guessed run, its outermost ones dropped until both ends are
+      // certainly closer: a row where the vertex reaches no interior cell costs no check.
+      std::uint64_t hits = interior[r] & run_bits(i0, i1, pi0);
+      const auto closer_at = [&](int bit) {
+        return certainly_closer(grid_.xc(static_cast<std::uint32_t>(pi0 + bit)) - v.x, dyz2);
+      };
+      while (hits != 0 && !closer_at(std::countr_zero(hits))) hits &= hits - 1;
+      while (hits != 0 && !closer_at(63 - std::countl_zero(hits))) {
+        hits &= ~(std::uint64_t{1} << (63 - std::countl_zero(hits)));
+      }
+      if (hits == 0) continue;
+      interior[r] &= ~hits;
       CellClass* row = out.data() + static_cast<std::size_t>(pj0 + r) * nx;
       while (hits != 0) {
         row[pi0 + std::countr_zero(hits)] = CellClass::Boundary;

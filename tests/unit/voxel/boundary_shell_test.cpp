@@ -175,21 +175,25 @@ TEST(BoundaryShell, AShellManyCellsThickIsItsDefinitionAcrossTheTilesOfItsReach)
 
 TEST(BoundaryShell, ACellExactlyTFromAVertexIsNotInTheShell) {
   // Cells near a vertex are marked by its distance before any facet tests them, with a bound on
-  // the rounding: a centre exactly t from the vertex must stay interior. A small lone facet
-  // (both orientations, so the fill is the box's) has its corner v = p - (0.375, 0.5, 0), so
-  // |p - v| = 0.625 = t exactly, and the facet runs away from p: v is its closest point.
+  // the rounding: a centre exactly t from the vertex must stay interior, at either end of the
+  // vertex's run of cells along the row. A small lone facet (both orientations, so the fill is
+  // the box's) has its corner v = p - side (0.375, 0.5, 0), so |p - v| = 0.625 = t exactly, and
+  // the facet runs away from p: v is its closest point.
   const double cell = 0.125;
   const double t = 0.625;
   const Vec3 p{0.0625 + 40 * cell, 0.0625 + 40 * cell, 0.0625 + 32 * cell};
-  const Vec3 v{p.x - 0.375, p.y - 0.5, p.z};
-  const Vec3 b{v.x - 0.25, v.y - 0.75, v.z + 0.1};
-  const Vec3 c{v.x - 0.75, v.y - 0.25, v.z - 0.1};
-  EXPECT_FALSE(detail::triangle_closer_than(p, v, b, c, t));
-  EXPECT_TRUE(detail::triangle_closer_than(p, v, b, c, std::nextafter(t, 1.0)));
-  TriangleSoup soup = mesh::make_box({0, 0, 0}, {8, 8, 8});
-  soup.triangles.push_back({v, b, c});
-  soup.triangles.push_back({v, c, b});
-  EXPECT_GT(expect_shell_by_definition(weld_vertices(soup), cell, t), 100u);
+  for (const double side : {1.0, -1.0}) {
+    SCOPED_TRACE(side > 0 ? "p at the high end of the vertex's run" : "p at its low end");
+    const Vec3 v{p.x - side * 0.375, p.y - side * 0.5, p.z};
+    const Vec3 b{v.x - side * 0.25, v.y - side * 0.75, v.z + 0.1};
+    const Vec3 c{v.x - side * 0.75, v.y - side * 0.25, v.z - 0.1};
+    EXPECT_FALSE(detail::triangle_closer_than(p, v, b, c, t));
+    EXPECT_TRUE(detail::triangle_closer_than(p, v, b, c, std::nextafter(t, 1.0)));
+    TriangleSoup soup = mesh::make_box({0, 0, 0}, {8, 8, 8});
+    soup.triangles.push_back({v, b, c});
+    soup.triangles.push_back({v, c, b});
+    EXPECT_GT(expect_shell_by_definition(weld_vertices(soup), cell, t), 100u);
+  }
 }
 
 }  // namespace
