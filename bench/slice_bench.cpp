@@ -96,23 +96,44 @@ BENCHMARK(BM_ShellSetupSphere)->Unit(benchmark::kMillisecond);
 
 /// One layer of the sphere's distance shell, t in tenths of a millimetre: 0.5 mm (5 cells, the
 /// default) and 3 mm (30 cells, whose boxes are taken a tile of 64 x 64 cells at a time).
-void BM_ShellClassifyLayerSphere(benchmark::State& state) {
+/// The solid layers k - reach .. k + reach of a model, and a lookup of them for the shell.
+struct SolidLayers {
+  std::int64_t first = 0;
+  std::vector<std::vector<std::uint8_t>> layers;
+  SolidLayerLookup lookup() const {
+    return [this](std::int64_t q) -> const std::uint8_t* {
+      const std::int64_t at = q - first;
+      return at >= 0 && at < static_cast<std::int64_t>(layers.size())
+                 ? layers[static_cast<std::size_t>(at)].data()
+                 : nullptr;
+    };
+  }
+};
+SolidLayers solid_layers(const IndexedMesh& mesh, const GridSpec& grid, std::uint32_t k,
+                         std::uint32_t reach) {
+  const std::vector<FacetIndex> all = bench::all_facets(mesh);
+  SolidLayers out;
+  out.first = static_cast<std::int64_t>(k) - reach;
+  for (std::uint32_t q = k - reach; q <= k + reach; ++q) {
+    out.layers.push_back(scanline_fill(mesh, slice_layer(mesh, all, grid, q), grid,
+                                       FillRule::NonZero, 0.0,
+                                       FillWanted{.cells = true, .hatches = false})
+                             .solid);
+  }
+  return out;
+}
+
+/// One layer of the sphere's shell, the argument its thickness in tenths of a mm: the distance
+/// mode, or the layers mode (as many rings as cells).
+void shell_classify_layer_sphere(benchmark::State& state, ShellMode mode) {
   const IndexedMesh& mesh = model("sphere.stl");
   const GridSpec grid = *make_grid(mesh.bounds(), GridOptions{});
-  const std::vector<FacetIndex> all = bench::all_facets(mesh);
   const std::uint32_t k = grid.nz / 2;
-  std::vector<std::vector<std::uint8_t>> solid;  // layers k - 1, k, k + 1
-  for (std::uint32_t q = k - 1; q <= k + 1; ++q) {
-    solid.push_back(scanline_fill(mesh, slice_layer(mesh, all, grid, q), grid, FillRule::NonZero,
-                                  0.0, FillWanted{.cells = true, .hatches = false})
-                        .solid);
-  }
-  const SolidLayerLookup lookup = [&](std::int64_t q) -> const std::uint8_t* {
-    const std::int64_t at = q - (static_cast<std::int64_t>(k) - 1);
-    return at >= 0 && at < 3 ? solid[static_cast<std::size_t>(at)].data() : nullptr;
-  };
-  const BoundaryShell shell(mesh, grid, ShellMode::Distance,
-                            static_cast<double>(state.range(0)) / 10.0);
+  const double thickness = static_cast<double>(state.range(0)) / 10.0;
+  const SolidLayers solid =
+      solid_layers(mesh, grid, k, BoundaryShell::reach_layers(grid, mode, thickness));
+  const SolidLayerLookup lookup = solid.lookup();
+  const BoundaryShell shell(mesh, grid, mode, thickness);
   std::vector<CellClass> cells;
   for (auto _ : state) {
     shell.classify(k, lookup, cells);
@@ -122,7 +143,14 @@ void BM_ShellClassifyLayerSphere(benchmark::State& state) {
   state.counters["boundary"] =
       static_cast<double>(std::count(cells.begin(), cells.end(), CellClass::Boundary));
 }
+void BM_ShellClassifyLayerSphere(benchmark::State& state) {
+  shell_classify_layer_sphere(state, ShellMode::Distance);
+}
 BENCHMARK(BM_ShellClassifyLayerSphere)->Arg(5)->Arg(30)->Unit(benchmark::kMicrosecond);
+void BM_ShellRingsLayerSphere(benchmark::State& state) {
+  shell_classify_layer_sphere(state, ShellMode::Layers);
+}
+BENCHMARK(BM_ShellRingsLayerSphere)->Arg(5)->Arg(30)->Unit(benchmark::kMicrosecond);
 
 /// The layers each facet crosses: two exact plane counts a facet from a first guess (count_prefix).
 void BM_FacetLayerRanges(benchmark::State& state) {

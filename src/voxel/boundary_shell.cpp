@@ -8,7 +8,6 @@
 #include <atomic>
 #include <bit>
 #include <cmath>
-#include <deque>
 #include <limits>
 #include <memory>
 #include <numeric>
@@ -807,56 +806,72 @@ void BoundaryShell::mark_near_wide_facet(const Vec3& a, const Vec3& b, const Vec
 
 void BoundaryShell::mark_rings(std::uint32_t k, const SolidLayerLookup& solid,
                                std::vector<CellClass>& out) const {
-  // Graph distance through solid cells from the first ring; a path shorter than n rings from
-  // layer k stays within layers k - (n - 1) .. k + (n - 1).
-  const std::int64_t n = rings_;
-  const std::int64_t lo = std::max<std::int64_t>(0, static_cast<std::int64_t>(k) - (n - 1));
-  const std::int64_t hi =
-      std::min<std::int64_t>(grid_.nz - 1, static_cast<std::int64_t>(k) + (n - 1));
-  const std::size_t layer_cells = grid_.cells_per_layer();
+  // A solid cell's ring is its count of 6-neighbour steps to the nearest empty cell (outside the
+  // grid counts as empty): a shortest path through solid cells to the first ring and one step
+  // out. The straight staircase toward the nearest empty cell is such a path, since each cell on
+  // it is closer to the cell than that empty cell, so solid. So the ring is the city-block
+  // distance to the nearest empty cell, and city-block distance is a sum over the axes: it is
+  // found one axis at a time, along z over the n layers on either side, then along the rows and
+  // the columns of this layer. Distances are capped at n + 1, which n = 255 still fits in 16
+  // bits; a cell is in the shell when its distance is at most n.
+  const std::uint32_t n = rings_;
   const std::uint32_t nx = grid_.nx;
   const std::uint32_t ny = grid_.ny;
-  const std::size_t depth = static_cast<std::size_t>(hi - lo + 1);
-  std::vector<std::uint8_t> ring(depth * layer_cells, 0);
-  std::deque<std::size_t> frontier;
-  std::vector<CellClass> layer;
-  for (std::int64_t q = lo; q <= hi; ++q) {
-    layer.assign(layer_cells, CellClass::Empty);
-    first_ring(solid(q), solid(q - 1), solid(q + 1), nx, ny, layer.data());
-    const std::size_t base = static_cast<std::size_t>(q - lo) * layer_cells;
-    for (std::size_t c = 0; c < layer_cells; ++c) {
-      if (layer[c] != CellClass::Boundary) continue;
-      ring[base + c] = 1;
-      frontier.push_back(base + c);
+  const std::size_t cells = grid_.cells_per_layer();
+  const auto cap = static_cast<std::uint16_t>(n + 1);
+  std::vector<std::uint16_t> distance(cells);
+  std::uint16_t* dist = distance.data();
+  // Along z: 0 on an empty cell, else the nearest layer within n where the column is empty (a
+  // layer beyond the grid is empty throughout).
+  const std::uint8_t* here = solid(k);
+  for (std::size_t c = 0; c < cells; ++c) dist[c] = here[c] != 0 ? cap : 0;
+  for (std::uint32_t d = 1; d <= n; ++d) {
+    const std::uint8_t* below = solid(static_cast<std::int64_t>(k) - d);
+    const std::uint8_t* above = solid(static_cast<std::int64_t>(k) + d);
+    const auto step = static_cast<std::uint16_t>(d);
+    if (below == nullptr || above == nullptr) {
+      for (std::size_t c = 0; c < cells; ++c) dist[c] = std::min(dist[c], step);
+      break;  // nothing farther is nearer
+    }
+    for (std::size_t c = 0; c < cells; ++c) {
+      const bool open = (below[c] == 0) | (above[c] == 0);
+      dist[c] = std::min(dist[c], open ? step : cap);
     }
   }
-  while (!frontier.empty()) {
-    const std::size_t at = frontier.front();
-    frontier.pop_front();
-    const std::uint8_t r = ring[at];
-    if (r >= n) continue;
-    const std::size_t q = at / layer_cells;
-    const std::size_t c = at % layer_cells;
-    const std::uint32_t i = static_cast<std::uint32_t>(c % nx);
-    const std::uint32_t j = static_cast<std::uint32_t>(c / nx);
-    const auto visit = [&](std::size_t q2, std::size_t c2) {
-      const std::size_t idx = q2 * layer_cells + c2;
-      if (ring[idx] != 0) return;
-      if (!solid(lo + static_cast<std::int64_t>(q2))[c2]) return;
-      ring[idx] = static_cast<std::uint8_t>(r + 1);
-      frontier.push_back(idx);
-    };
-    if (i > 0) visit(q, c - 1);
-    if (i + 1 < nx) visit(q, c + 1);
-    if (j > 0) visit(q, c - nx);
-    if (j + 1 < ny) visit(q, c + nx);
-    if (q > 0) visit(q - 1, c);
-    if (q + 1 < depth) visit(q + 1, c);
+  // Along each row, both ways; the cells beyond either end are empty.
+  for (std::uint32_t j = 0; j < ny; ++j) {
+    std::uint16_t* row = dist + std::size_t{j} * nx;
+    std::uint16_t next = 1;
+    for (std::uint32_t i = 0; i < nx; ++i) {
+      row[i] = std::min(row[i], next);
+      next = static_cast<std::uint16_t>(row[i] + 1);
+    }
+    next = 1;
+    for (std::uint32_t i = nx; i-- > 0;) {
+      row[i] = std::min(row[i], next);
+      next = static_cast<std::uint16_t>(row[i] + 1);
+    }
   }
-  const std::size_t base =
-      static_cast<std::size_t>(static_cast<std::int64_t>(k) - lo) * layer_cells;
-  for (std::size_t c = 0; c < layer_cells; ++c) {
-    if (out[c] == CellClass::Interior && ring[base + c] != 0) out[c] = CellClass::Boundary;
+  // Along each column, both ways, a row at a time (many cells a step); the rows beyond either
+  // end are empty.
+  const auto relax_row = [&](std::uint16_t* row, const std::uint16_t* from) {
+    for (std::uint32_t i = 0; i < nx; ++i) {
+      row[i] = std::min(row[i], static_cast<std::uint16_t>(from[i] + 1));
+    }
+  };
+  const auto relax_edge_row = [&](std::uint16_t* row) {
+    for (std::uint32_t i = 0; i < nx; ++i) row[i] = std::min<std::uint16_t>(row[i], 1);
+  };
+  relax_edge_row(dist);
+  for (std::uint32_t j = 1; j < ny; ++j) {
+    relax_row(dist + std::size_t{j} * nx, dist + std::size_t{j - 1} * nx);
+  }
+  relax_edge_row(dist + std::size_t{ny - 1} * nx);
+  for (std::uint32_t j = ny - 1; j-- > 0;) {
+    relax_row(dist + std::size_t{j} * nx, dist + std::size_t{j + 1} * nx);
+  }
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (out[c] == CellClass::Interior && dist[c] <= n) out[c] = CellClass::Boundary;
   }
 }
 

@@ -2,7 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <deque>
+#include <random>
+#include <vector>
 
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
@@ -193,6 +199,112 @@ TEST(BoundaryShell, ACellExactlyTFromAVertexIsNotInTheShell) {
     soup.triangles.push_back({v, b, c});
     soup.triangles.push_back({v, c, b});
     EXPECT_GT(expect_shell_by_definition(weld_vertices(soup), cell, t), 100u);
+  }
+}
+
+/// Solid layers for the rings' tests: a few balls of cells in an nx x ny x nz grid, so that the
+/// solid has a deep inside, thin parts and cells on the grid's sides.
+std::vector<std::vector<std::uint8_t>> random_balls(std::uint32_t nx, std::uint32_t ny,
+                                                    std::uint32_t nz, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<std::vector<std::uint8_t>> layers(nz, std::vector<std::uint8_t>(nx * ny, 0));
+  for (int ball = 0; ball < 6; ++ball) {
+    const double cx = unit(rng) * nx, cy = unit(rng) * ny, cz = unit(rng) * nz;
+    const double r = 1.5 + unit(rng) * 7.0;
+    for (std::uint32_t k = 0; k < nz; ++k) {
+      for (std::uint32_t j = 0; j < ny; ++j) {
+        for (std::uint32_t i = 0; i < nx; ++i) {
+          const double dx = i + 0.5 - cx, dy = j + 0.5 - cy, dz = k + 0.5 - cz;
+          if (dx * dx + dy * dy + dz * dz < r * r) layers[k][j * nx + i] = 1;
+        }
+      }
+    }
+  }
+  return layers;
+}
+
+TEST(BoundaryShell, RingsAreTheirDefinitionCellForCell) {
+  // SPEC: n rings, the first being the solid cells with an empty 6-neighbour (outside the grid
+  // counts as empty), each further ring the solid 6-neighbours of the one before. Here by
+  // breadth-first search over the whole grid, against the shell's classes of every layer.
+  const std::uint32_t nx = 23, ny = 19, nz = 14;
+  const TriangleSoup box = mesh::make_box({0, 0, 0}, {nx, ny, nz});
+  const IndexedMesh mesh = weld_vertices(box);
+  GridSpec grid;
+  grid.nx = nx;
+  grid.ny = ny;
+  grid.nz = nz;
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    const auto layers = random_balls(nx, ny, nz, seed);
+    const auto at = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+      return i >= 0 && j >= 0 && k >= 0 && i < nx && j < ny && k < nz && layers[k][j * nx + i] != 0;
+    };
+    // ring[c]: 0 for an empty cell, else the ring the cell is in.
+    std::vector<std::uint32_t> ring(std::size_t{nx} * ny * nz, 0);
+    std::deque<std::array<std::int64_t, 3>> frontier;
+    const std::array<std::array<int, 3>, 6> steps = {
+        {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}};
+    const auto index = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+      return (static_cast<std::size_t>(k) * ny + j) * nx + i;
+    };
+    for (std::int64_t k = 0; k < nz; ++k) {
+      for (std::int64_t j = 0; j < ny; ++j) {
+        for (std::int64_t i = 0; i < nx; ++i) {
+          if (!at(i, j, k)) continue;
+          for (const auto& s : steps) {
+            if (!at(i + s[0], j + s[1], k + s[2])) {
+              ring[index(i, j, k)] = 1;
+              frontier.push_back({i, j, k});
+              break;
+            }
+          }
+        }
+      }
+    }
+    while (!frontier.empty()) {
+      const auto [i, j, k] = frontier.front();
+      frontier.pop_front();
+      for (const auto& s : steps) {
+        const std::int64_t a = i + s[0], b = j + s[1], c = k + s[2];
+        if (at(a, b, c) && ring[index(a, b, c)] == 0) {
+          ring[index(a, b, c)] = ring[index(i, j, k)] + 1;
+          frontier.push_back({a, b, c});
+        }
+      }
+    }
+    const std::uint32_t deepest = *std::max_element(ring.begin(), ring.end());
+    ASSERT_GE(deepest, 5u) << "seed " << seed << ": the balls must leave a deep inside";
+    const SolidLayerLookup solid = [&](std::int64_t k) -> const std::uint8_t* {
+      return k >= 0 && k < nz ? layers[static_cast<std::size_t>(k)].data() : nullptr;
+    };
+    for (const std::uint32_t n : {1u, 2u, 3u, 4u, 7u, 255u}) {
+      // t = n + 0.5 cells gives n rings (int(t / d)); 255 is the most there are.
+      const BoundaryShell shell(mesh, grid, ShellMode::Layers, n == 255 ? 1000.0 : n + 0.5);
+      ASSERT_EQ(shell.rings(), n);
+      std::size_t wrong = 0, beyond_first = 0;
+      std::vector<CellClass> out;
+      for (std::uint32_t k = 0; k < nz; ++k) {
+        shell.classify(k, solid, out);
+        for (std::uint32_t j = 0; j < ny; ++j) {
+          for (std::uint32_t i = 0; i < nx; ++i) {
+            const std::uint32_t r = ring[index(i, j, k)];
+            const CellClass expected =
+                r == 0 ? CellClass::Empty : (r <= n ? CellClass::Boundary : CellClass::Interior);
+            beyond_first += r > 1 && r <= n ? 1 : 0;
+            if (out[j * nx + i] != expected && ++wrong <= 5) {
+              ADD_FAILURE() << "seed " << seed << ", n " << n << ": cell (" << i << ", " << j
+                            << ", " << k << ") in ring " << r << " is "
+                            << static_cast<int>(out[j * nx + i]);
+            }
+          }
+        }
+      }
+      EXPECT_EQ(wrong, 0u) << "seed " << seed << ", n " << n;
+      if (n > 1) {
+        EXPECT_GT(beyond_first, 0u) << "seed " << seed << ", n " << n;
+      }
+    }
   }
 }
 
