@@ -1,5 +1,8 @@
 #include "strata/validate/validate_model.hpp"
 
+#include <tbb/parallel_invoke.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 
 #include "strata/exact/slice_exact.hpp"
@@ -74,12 +77,21 @@ Result<ValidationReport> validate_model(const IndexedMesh& mesh, const GridSpec&
         return slice_model_exact(mesh, grid, options, sinks, {}, &exact_soup);
       },
       [&](const LayerResult* fast, const LayerResult* exact) {
-        if (fast && exact) {
-          comparison.add_layers(*fast, *exact);
-        } else if (fast) {
-          comparison.add_fast_layer(*fast);
-        }
-        reference.add_layer(fast, exact);
+        // The comparison of the paths and the reference slicer's share nothing but the layers
+        // they read: they run side by side, each still taking the layers in order. Isolated,
+        // so that a thread waiting here takes no slicing task, whose layer would come back to
+        // the sink that is waiting.
+        tbb::this_task_arena::isolate([&] {
+          tbb::parallel_invoke(
+              [&] {
+                if (fast && exact) {
+                  comparison.add_layers(*fast, *exact);
+                } else if (fast) {
+                  comparison.add_fast_layer(*fast);
+                }
+              },
+              [&] { reference.add_layer(fast, exact); });
+        });
       },
       window);
   if (!run.a) return run.a.error();
