@@ -94,8 +94,6 @@ void BM_ShellSetupSphere(benchmark::State& state) {
 }
 BENCHMARK(BM_ShellSetupSphere)->Unit(benchmark::kMillisecond);
 
-/// One layer of the sphere's distance shell, t in tenths of a millimetre: 0.5 mm (5 cells, the
-/// default) and 3 mm (30 cells, whose boxes are taken a tile of 64 x 64 cells at a time).
 /// The solid layers k - reach .. k + reach of a model, and a lookup of them for the shell.
 struct SolidLayers {
   std::int64_t first = 0;
@@ -123,8 +121,9 @@ SolidLayers solid_layers(const IndexedMesh& mesh, const GridSpec& grid, std::uin
   return out;
 }
 
-/// One layer of the sphere's shell, the argument its thickness in tenths of a mm: the distance
-/// mode, or the layers mode (as many rings as cells).
+/// One layer of the sphere's shell, the argument its thickness in tenths of a millimetre: 0.5 mm
+/// (5 cells, the default) and 3 mm (30 cells; in the distance mode the boxes are then taken a
+/// tile of 64 x 64 cells at a time, in the layers mode as many rings as cells).
 void shell_classify_layer_sphere(benchmark::State& state, ShellMode mode) {
   const IndexedMesh& mesh = model("sphere.stl");
   const GridSpec grid = *make_grid(mesh.bounds(), GridOptions{});
