@@ -2,7 +2,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <deque>
+#include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "strata/core/error.hpp"
 #include "strata/io/output_file.hpp"
@@ -34,53 +37,27 @@ std::string b64(const std::vector<T>& values) {
   return detail::base64(detail::as_bytes(values));
 }
 
+/// Where the page's data goes, a piece at a time: the page file, or a string.
+using TextSink = std::function<void(std::string_view)>;
+
+/// Raw bytes base64-encoded per piece, so that no whole copy of a long text is held: a multiple of
+/// 3 bytes, whose encodings join into the encoding of the whole.
+constexpr std::size_t kBase64PieceBytes = 3 * 64 * 1024;
+/// The layers' text is made in parallel a batch of about this many characters at a time.
+constexpr std::size_t kLayersBatchChars = std::size_t{1} << 20;
+
+void write_base64_pieces(std::string_view bytes, std::string& buffer, const TextSink& sink) {
+  for (std::size_t from = 0; from < bytes.size(); from += kBase64PieceBytes) {
+    const std::string_view piece = bytes.substr(from, kBase64PieceBytes);
+    buffer.resize(detail::base64_size(piece.size()));
+    detail::write_base64(piece, buffer.data());
+    sink(buffer);
+  }
+}
+
 /// Stands for the layers in the page's JSON until their text replaces it; control characters
 /// make it a string no name or note can be.
 constexpr const char* kLayersMarker = "\x01strata-layers\x01";
-
-/// Long base64 values kept out of the JSON document while it is written: each stands in it as a
-/// marker until its text replaces it. Base64 needs no escape, and the JSON library would look
-/// at each of its characters again (the display mesh of a large model is megabytes of it).
-class HeldTexts {
- public:
-  /// The marker to put in the document for `text`.
-  std::string hold(std::string text) {
-    std::string marker = fmt::format("\x01strata-held-{}\x01", texts_.size());
-    // As a value it follows its key's colon: a name holding the marker's text has its quotes
-    // escaped, and never matches.
-    patterns_.push_back(std::string(":").append(json(marker).dump()));
-    texts_.push_back(std::move(text));
-    return marker;
-  }
-
-  /// `document` with every held text, in quotes, where its marker is.
-  std::string put_back(std::string document) const {
-    if (texts_.empty()) return document;
-    std::vector<std::pair<std::size_t, std::size_t>> found;  // (where, which)
-    std::size_t size = document.size();
-    for (std::size_t k = 0; k < texts_.size(); ++k) {
-      const std::size_t at = document.find(patterns_[k]);
-      STRATA_ASSERT(at != std::string::npos, "a held text's marker is in the page data");
-      found.emplace_back(at, k);
-      size += texts_[k].size() + 3 - patterns_[k].size();
-    }
-    std::sort(found.begin(), found.end());
-    std::string out;
-    out.reserve(size);
-    std::size_t from = 0;
-    for (const auto& [at, k] : found) {
-      out.append(document, from, at - from);
-      out.append(":\"").append(texts_[k]).push_back('"');
-      from = at + patterns_[k].size();
-    }
-    out.append(document, from);
-    return out;
-  }
-
- private:
-  std::vector<std::string> patterns_;
-  std::vector<std::string> texts_;
-};
 
 /// The text of a base64 string of `bytes`, with its quotes, at `to`; returns the end.
 char* write_quoted_base64(std::string_view bytes, char* to) {
@@ -120,72 +97,186 @@ char* write_contours(const std::vector<ViewLoop>& loops, char* to) {
   return to;
 }
 
-/// The page's data with the layers' text where their marker stood, between `before` and
-/// `after`, the rest of the document. The "layers" object is compact JSON, keys in the order the
-/// JSON library writes them (sorted); base64 and the loop kinds need no escaping. Each layer is
-/// written in parallel straight to its place in the one string of the page's size: the layers are
-/// most of a page (tens of MB), which a string a layer, then an array, then the document would
-/// hold three times over and copy as often.
-std::string with_layers_text(std::string_view before, const ViewStack& s, std::string_view after) {
-  const std::size_t n = s.stored.size();
-  std::vector<std::size_t> cells_at(n + 1), contours_at(n + 1), hatches_at(n + 1);
-  // Item k of an array starts at at[k] (its comma before it); at[n] is the array's "]".
-  const auto lay_out = [&](std::vector<std::size_t>& at, std::size_t start, auto item_size) {
-    at[0] = start + 1;
-    for (std::size_t k = 0; k < n; ++k) at[k + 1] = at[k] + (k > 0) + item_size(k);
-    return at[n] + 1;
-  };
-  const std::string_view cells_key = R"({"cells":)";
-  const std::string_view contours_key = R"(,"contours":)";
-  const std::string_view hatches_key = R"(,"encoding":"2bit-msb-zlib","hatches":)";
-  const std::string tail =
-      R"(,"stored":)" + json(s.stored).dump() + fmt::format(R"(,"stride":{}}})", s.stride);
-  std::size_t end = lay_out(cells_at, before.size() + cells_key.size(), [&](std::size_t k) {
-    return 2 + detail::base64_size(s.cells_zlib[k].size());
-  });
-  end = lay_out(contours_at, end + contours_key.size(),
-                [&](std::size_t k) { return contours_size(s.contours[k]); });
-  end += hatches_key.size();
-  if (s.has_hatches) {
-    end = lay_out(hatches_at, end, [&](std::size_t k) {
-      return 2 + detail::base64_size(sizeof(float) * s.hatches[k].size());
-    });
-  } else {
-    end += 4;  // null
-  }
-  const std::size_t layers_end = end + tail.size();
+/// The "layers" object of the page's data: compact JSON, keys in the order the JSON library writes
+/// them (sorted), what it would write for the same values; base64 and the loop kinds need no
+/// escaping. The layers are most of a page (tens of MB): their text is made a batch of layers at
+/// a time, each layer in parallel straight to its place in the batch, and handed on, rather than
+/// held whole (or, through JSON values, three times over).
+class LayersText {
+ public:
+  explicit LayersText(const ViewStack& stack)
+      : s_(stack),
+        tail_(R"(,"stored":)" + json(s_.stored).dump() +
+              fmt::format(R"(,"stride":{}}})", s_.stride)) {}
 
-  std::string text(layers_end + after.size(), '\0');
-  char* const base = text.data();
-  const auto put = [](std::string_view piece, char* to) {
-    return std::copy(piece.begin(), piece.end(), to);
-  };
-  put(cells_key, put(before, base));
-  put(contours_key, base + cells_at[n] + 1);
-  char* hatches = put(hatches_key, base + contours_at[n] + 1);
-  if (s.has_hatches) {
-    hatches[0] = '[';
-    base[hatches_at[n]] = ']';
-  } else {
-    put("null", hatches);
+  std::size_t size() const {
+    std::size_t size = kCellsKey.size() + kContoursKey.size() + kHatchesKey.size() + tail_.size();
+    size += array_size([&](std::size_t k) { return cells_size(k); });
+    size += array_size([&](std::size_t k) { return contours_size(s_.contours[k]); });
+    size += s_.has_hatches ? array_size([&](std::size_t k) { return hatches_size(k); }) : 4;
+    return size;
   }
-  base[cells_at[0] - 1] = '[';
-  base[cells_at[n]] = ']';
-  base[contours_at[0] - 1] = '[';
-  base[contours_at[n]] = ']';
-  put(after, put(tail, base + layers_end - tail.size()));
-  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
-    const auto item = [&](const std::vector<std::size_t>& at) {
-      char* to = base + at[k];
-      if (k > 0) *to++ = ',';
-      return to;
-    };
-    write_quoted_base64(s.cells_zlib[k], item(cells_at));
-    write_contours(s.contours[k], item(contours_at));
-    if (s.has_hatches) write_quoted_base64(detail::as_bytes(s.hatches[k]), item(hatches_at));
-  });
-  return text;
-}
+
+  void write(const TextSink& sink) const {
+    std::string batch;
+    sink(kCellsKey);
+    write_array([&](std::size_t k) { return cells_size(k); },
+                [&](std::size_t k, char* to) { write_quoted_base64(s_.cells_zlib[k], to); }, batch,
+                sink);
+    sink(kContoursKey);
+    write_array([&](std::size_t k) { return contours_size(s_.contours[k]); },
+                [&](std::size_t k, char* to) { write_contours(s_.contours[k], to); }, batch, sink);
+    sink(kHatchesKey);
+    if (s_.has_hatches) {
+      write_array([&](std::size_t k) { return hatches_size(k); },
+                  [&](std::size_t k, char* to) {
+                    write_quoted_base64(detail::as_bytes(s_.hatches[k]), to);
+                  },
+                  batch, sink);
+    } else {
+      sink("null");
+    }
+    sink(tail_);
+  }
+
+ private:
+  static constexpr std::string_view kCellsKey = R"({"cells":)";
+  static constexpr std::string_view kContoursKey = R"(,"contours":)";
+  static constexpr std::string_view kHatchesKey = R"(,"encoding":"2bit-msb-zlib","hatches":)";
+
+  std::size_t cells_size(std::size_t k) const {
+    return 2 + detail::base64_size(s_.cells_zlib[k].size());
+  }
+  std::size_t hatches_size(std::size_t k) const {
+    return 2 + detail::base64_size(sizeof(float) * s_.hatches[k].size());
+  }
+  std::size_t layers() const { return s_.stored.size(); }
+
+  /// Characters of an array of one item a layer: "[", the items with a comma between, "]".
+  template <class ItemSize>
+  std::size_t array_size(ItemSize item_size) const {
+    std::size_t size = 2 + (layers() > 0 ? layers() - 1 : 0);
+    for (std::size_t k = 0; k < layers(); ++k) size += item_size(k);
+    return size;
+  }
+
+  template <class ItemSize, class WriteItem>
+  void write_array(ItemSize item_size, WriteItem write_item, std::string& batch,
+                   const TextSink& sink) const {
+    sink("[");
+    std::vector<std::size_t> at;  // where each item of the batch starts, its comma before it
+    for (std::size_t first = 0; first < layers();) {
+      at.clear();
+      std::size_t chars = 0;
+      std::size_t end = first;
+      for (; end < layers() && (end == first || chars < kLayersBatchChars); ++end) {
+        at.push_back(chars);
+        chars += (end > 0) + item_size(end);
+      }
+      batch.resize(chars);
+      tbb::parallel_for(first, end, [&](std::size_t k) {
+        char* to = batch.data() + at[k - first];
+        if (k > 0) *to++ = ',';
+        write_item(k, to);
+      });
+      sink(batch);
+      first = end;
+    }
+    sink("]");
+  }
+
+  const ViewStack& s_;
+  std::string tail_;
+};
+
+/// The page's data as a JSON document in which long texts stand as markers: the layers, and base64
+/// values (the display mesh of a large model is megabytes of it), which the JSON library would
+/// look at a character at a time again. Each marker is a string of control characters, which no
+/// name or note can hold; as a value it follows its key's colon (a name holding the marker's text
+/// has its quotes escaped, and never matches). The marked texts are written where their markers
+/// stand as the document is handed on.
+class MarkedDocument {
+ public:
+  MarkedDocument() = default;
+  // Its held texts point into what it keeps, and at the layers' text it holds.
+  MarkedDocument(const MarkedDocument&) = delete;
+  MarkedDocument& operator=(const MarkedDocument&) = delete;
+
+  /// The marker to put in the document for the base64 text of `bytes`, which must outlive this.
+  std::string hold_base64(std::string_view bytes) {
+    std::string marker = fmt::format("\x01strata-held-{}\x01", held_.size());
+    held_.push_back({std::string(":").append(json(marker).dump()), ":\"", bytes, nullptr});
+    return marker;
+  }
+  /// The same for bytes this keeps.
+  std::string keep_base64(std::string bytes) {
+    kept_.push_back(std::move(bytes));
+    return hold_base64(std::string_view(kept_.back()));
+  }
+  /// The marker to put in the document for the "layers" object of `stack`.
+  std::string hold_layers(const ViewStack& stack) {
+    layers_.emplace(stack);
+    // With its key: a name holding the marker's text is written with its quotes escaped.
+    held_.push_back({std::string(R"("layers":)").append(json(kLayersMarker).dump()),
+                     R"("layers":)",
+                     {},
+                     &*layers_});
+    return kLayersMarker;
+  }
+
+  void set_document(std::string document) {
+    document_ = std::move(document);
+    found_.clear();
+    for (std::size_t k = 0; k < held_.size(); ++k) {
+      const std::size_t at = document_.find(held_[k].pattern);
+      STRATA_ASSERT(at != std::string::npos, "a held text's marker is in the page data");
+      found_.emplace_back(at, k);
+    }
+    std::sort(found_.begin(), found_.end());
+  }
+
+  /// Characters of the document with every held text in place.
+  std::size_t size() const {
+    std::size_t size = document_.size();
+    for (const Held& h : held_) {
+      size += h.opening.size() - h.pattern.size() +
+              (h.layers != nullptr ? h.layers->size() : detail::base64_size(h.bytes.size()) + 1);
+    }
+    return size;
+  }
+
+  void write(const TextSink& sink) const {
+    const std::string_view document = document_;
+    std::string buffer;
+    std::size_t from = 0;
+    for (const auto& [at, k] : found_) {
+      const Held& h = held_[k];
+      sink(document.substr(from, at - from));
+      sink(h.opening);
+      if (h.layers != nullptr) {
+        h.layers->write(sink);
+      } else {
+        write_base64_pieces(h.bytes, buffer, sink);
+        sink("\"");
+      }
+      from = at + h.pattern.size();
+    }
+    sink(document.substr(from));
+  }
+
+ private:
+  struct Held {
+    std::string pattern;       ///< the marker as it stands in the document, with its colon
+    std::string_view opening;  ///< what the text follows in its place
+    std::string_view bytes;    ///< to be written as a base64 string, when not the layers
+    const LayersText* layers;
+  };
+  std::string document_;
+  std::vector<Held> held_;
+  std::vector<std::pair<std::size_t, std::size_t>> found_;  // (where, which), in order
+  std::deque<std::string> kept_;
+  std::optional<LayersText> layers_;
+};
 
 void push_segment(std::vector<float>& out, const Vec3& a, const Vec3& b) {
   for (const Vec3& p : {a, b}) {
@@ -314,11 +405,9 @@ TemplateParts template_parts() {
   return {page_template.substr(0, at), page_template.substr(at + detail::kViewDataMarker.size())};
 }
 
-}  // namespace
-
-Result<std::string> view_page_data(const ViewPage& page) {
+/// The page's data as a marked document in `out` (which the page must outlive).
+Result<void> compose_page_data(const ViewPage& page, MarkedDocument& out) {
   json data;
-  HeldTexts held;
   data["format"] = "strata-view";
   data["version"] = 1;
   data["title"] = page.title;
@@ -347,16 +436,13 @@ Result<std::string> view_page_data(const ViewPage& page) {
     data["mesh"] = {{"facets_in_model", m.facets_in_model},
                     {"facets_shown", m.facets()},
                     {"simplified", m.simplified},
-                    {"positions", held.hold(b64(m.positions))},
-                    {"indices", held.hold(b64(m.indices))}};
+                    {"positions", out.hold_base64(detail::as_bytes(m.positions))},
+                    {"indices", out.hold_base64(detail::as_bytes(m.indices))}};
   }
   data["check"] = nullptr;
   if (page.check) data["check"] = check_json(*page.check, page.model_mesh);
 
-  // The layers are most of the page (tens of MB of base64): their text is written directly, in
-  // parallel, where a JSON value's serialisation would look at every character again. A marker
-  // string holds their place in the document; the text is what the JSON library would write.
-  data["layers"] = kLayersMarker;
+  data["layers"] = out.hold_layers(page.stack);
   // No volume when no layer was collected (a model checked, not sliced yet).
   data["volume"] = nullptr;
   if (const ViewVolume& v = page.stack.volume; !v.blocks.empty()) {
@@ -368,7 +454,7 @@ Result<std::string> view_page_data(const ViewPage& page) {
                       {"bx", v.bx},
                       {"by", v.by},
                       {"bz", v.bz},
-                      {"data", held.hold(detail::base64(detail::zlib_compress(volume_bytes)))}};
+                      {"data", out.keep_base64(detail::zlib_compress(volume_bytes))}};
   }
 
   data["validation"] = nullptr;
@@ -383,16 +469,19 @@ Result<std::string> view_page_data(const ViewPage& page) {
   // Invalid UTF-8 in a name (a path of the model) is replaced rather than refused. The document
   // is escaped for its script element while the long texts, base64 and the layers, which hold
   // no "<", are still their markers: once, over the rest of the document alone.
-  const std::string text =
-      held.put_back(escape_script_end(data.dump(-1, ' ', false, json::error_handler_t::replace)));
-  // With its key: a name holding the marker's text is written with its quotes escaped.
-  const std::string key = R"("layers":)";
-  const std::string marker = key + json(kLayersMarker).dump();
-  const std::size_t marker_at = text.find(marker);
-  STRATA_ASSERT(marker_at != std::string::npos, "the layers' marker is in the page data");
-  const std::string_view document = text;
-  return with_layers_text(document.substr(0, marker_at + key.size()), page.stack,
-                          document.substr(marker_at + marker.size()));
+  out.set_document(escape_script_end(data.dump(-1, ' ', false, json::error_handler_t::replace)));
+  return {};
+}
+
+}  // namespace
+
+Result<std::string> view_page_data(const ViewPage& page) {
+  MarkedDocument document;
+  if (auto ok = compose_page_data(page, document); !ok) return ok.error();
+  std::string text;
+  text.reserve(document.size());
+  document.write([&](std::string_view piece) { text.append(piece); });
+  return text;
 }
 
 std::string view_page_with_data(std::string_view data) {
@@ -406,14 +495,14 @@ std::string view_page_with_data(std::string_view data) {
 }
 
 Result<void> write_view_page(const std::filesystem::path& path, const ViewPage& page) {
-  auto data = view_page_data(page);
-  if (!data) return data.error();
+  MarkedDocument document;
+  if (auto ok = compose_page_data(page, document); !ok) return ok.error();
   const TemplateParts parts = template_parts();
-  // Written in three pieces: the data of a large stack is not copied into a page string.
+  // Written a piece at a time: the data of a large stack is never held whole.
   auto out = io::OutputFile::create(path);
   if (!out) return out.error();
   out->write(parts.before);
-  out->write(*data);
+  document.write([&](std::string_view piece) { out->write(piece); });
   out->write(parts.after);
   return out->commit();
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <random>
 #include <string>
 
 #include "strata/view/view_page.hpp"
@@ -376,6 +377,61 @@ TEST(WriteViewPage, WritesThePageWithItsData) {
   ASSERT_TRUE(write_view_page(dir / "page.html", page).has_value());
   const std::string written = test::read_file(dir / "page.html");
   EXPECT_EQ(written, view_page_with_data(*view_page_data(page)));
+}
+
+TEST(WriteViewPage, WritesALargePageInPiecesThatJoinIntoItsData) {
+  // The page is written a piece at a time: the base64 of a long value in pieces of raw bytes,
+  // the layers in batches made in parallel. Values long enough for several pieces and batches,
+  // of lengths that are not multiples of 3, must read back as their whole encodings.
+  std::mt19937 random(7);
+  const auto bytes = [&](std::size_t n) {
+    std::string out(n, '\0');
+    for (char& c : out) c = static_cast<char>(random());
+    return out;
+  };
+  ViewPage page;
+  page.title = "pieces";
+  DisplayMesh mesh;
+  for (std::size_t i = 0; i < 3 * 70'001; ++i) mesh.positions.push_back(0.001f * i);
+  for (std::uint32_t i = 0; i < 3 * 90'001; ++i) mesh.indices.push_back(i % 70'001);
+  page.mesh = mesh;
+  ViewStack& s = page.stack;
+  s.grid = GridSpec{0, 0, 0, 1, 1, 1, 2, 2, 60};
+  s.has_hatches = true;
+  for (std::uint32_t k = 0; k < 60; ++k) {
+    s.stored.push_back(k);
+    s.cells_zlib.push_back(bytes(40'000 + 7 * k));
+    s.contours.push_back({ViewLoop{LoopKind::Outer, std::vector<float>(20'000 + k, 0.5f * k)},
+                          ViewLoop{LoopKind::Hole, std::vector<float>(k, -1.0f)}});
+    s.hatches.push_back(std::vector<float>(4 * (k % 5), 2.0f * k));
+  }
+  s.volume.nx = s.volume.ny = 500;
+  s.volume.nz = 2;
+  s.volume.blocks.resize(500 * 500 * 2);
+  for (auto& b : s.volume.blocks) b = static_cast<std::uint8_t>(random() % 4);
+
+  test::TempDir dir("view-page");
+  ASSERT_TRUE(write_view_page(dir / "page.html", page).has_value());
+  const std::string written = test::read_file(dir / "page.html");
+  const Result<std::string> data = view_page_data(page);
+  ASSERT_TRUE(data.has_value());
+  EXPECT_EQ(written, view_page_with_data(*data));
+
+  const json j = json::parse(*data);
+  EXPECT_EQ(j.at("mesh").at("positions"), b64_floats(mesh.positions));
+  EXPECT_EQ(j.at("mesh").at("indices"), detail::base64(detail::as_bytes(mesh.indices)));
+  const std::string_view volume_bytes(reinterpret_cast<const char*>(s.volume.blocks.data()),
+                                      s.volume.blocks.size());
+  EXPECT_EQ(j.at("volume").at("data"), detail::base64(detail::zlib_compress(volume_bytes)));
+  const json& layers = j.at("layers");
+  ASSERT_EQ(layers.at("cells").size(), 60u);
+  for (std::size_t k = 0; k < 60; ++k) {
+    EXPECT_EQ(layers.at("cells")[k], detail::base64(s.cells_zlib[k])) << k;
+    EXPECT_EQ(layers.at("contours")[k][0].at("points"), b64_floats(s.contours[k][0].xy)) << k;
+    EXPECT_EQ(layers.at("contours")[k][1].at("kind"), "hole") << k;
+    EXPECT_EQ(layers.at("hatches")[k], b64_floats(s.hatches[k])) << k;
+  }
+  EXPECT_EQ(layers.at("stored"), json(s.stored));
 }
 
 TEST(WriteViewPage, WritesNothingWhenTheDataIsRefused) {
