@@ -11,7 +11,6 @@
 #include "cli/load_model.hpp"
 #include "strata/diagnose/diagnose_mesh.hpp"
 #include "strata/diagnose/mesh_report_json.hpp"
-#include "strata/io/output_file.hpp"
 #include "strata/slice/grid_spec.hpp"
 #include "strata/validate/validate_model.hpp"
 #include "strata/validate/validation_json.hpp"
@@ -64,9 +63,7 @@ Result<void> write_model_view(const serve::TaskRequest& request, const LoadedMod
   g.dx = std::max(box.max.x - box.min.x, 1e-9);
   g.dy = std::max(box.max.y - box.min.y, 1e-9);
   g.dz = std::max(box.max.z - box.min.z, 1e-9);
-  auto data = view::view_page_data(page);
-  if (!data) return data.error();
-  return io::write_text_file(serve::model_view_path(request), *data);
+  return view::write_view_page_data(serve::model_view_path(request), page);
 }
 
 Result<std::string> run_check(const serve::TaskRequest& request, const io::CoordinateScale& scale) {

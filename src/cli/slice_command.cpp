@@ -335,9 +335,9 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
     if (auto ok = view::write_view_page(*out.page_path, page); !ok) return fail(ok.error());
     committed.push_back(*out.page_path);
     if (!o.page.data_path.empty()) {
-      auto data = view::view_page_data(page);
-      if (!data) return fail(data.error());
-      if (auto ok = io::write_text_file(o.page.data_path, *data); !ok) return fail(ok.error());
+      if (auto ok = view::write_view_page_data(o.page.data_path, page); !ok) {
+        return fail(ok.error());
+      }
       committed.push_back(o.page.data_path);
     }
     if (o.page.path.empty()) written.push_back(stem + ".html");

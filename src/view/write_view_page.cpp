@@ -494,6 +494,15 @@ std::string view_page_with_data(std::string_view data) {
   return page;
 }
 
+Result<void> write_view_page_data(const std::filesystem::path& path, const ViewPage& page) {
+  MarkedDocument document;
+  if (auto ok = compose_page_data(page, document); !ok) return ok.error();
+  auto out = io::OutputFile::create(path);
+  if (!out) return out.error();
+  document.write([&](std::string_view piece) { out->write(piece); });
+  return out->commit();
+}
+
 Result<void> write_view_page(const std::filesystem::path& path, const ViewPage& page) {
   MarkedDocument document;
   if (auto ok = compose_page_data(page, document); !ok) return ok.error();

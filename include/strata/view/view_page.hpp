@@ -38,6 +38,11 @@ Result<std::string> view_page_data(const ViewPage& page);
 /// marker: a self-contained HTML page.
 std::string view_page_with_data(std::string_view data);
 
+/// Writes the page's data alone (the text of view_page_data) to `path` atomically, a piece at a
+/// time rather than held whole. @return Error{BadInput} as view_page_data, or naming the path
+/// when it cannot be written.
+Result<void> write_view_page_data(const std::filesystem::path& path, const ViewPage& page);
+
 /// Writes the self-contained page (the viewer with the data inlined) to `path` atomically.
 /// @return Error{BadInput} naming the path when it cannot be written.
 Result<void> write_view_page(const std::filesystem::path& path, const ViewPage& page);

@@ -416,6 +416,8 @@ TEST(WriteViewPage, WritesALargePageInPiecesThatJoinIntoItsData) {
   const Result<std::string> data = view_page_data(page);
   ASSERT_TRUE(data.has_value());
   EXPECT_EQ(written, view_page_with_data(*data));
+  ASSERT_TRUE(write_view_page_data(dir / "view.json", page).has_value());
+  EXPECT_EQ(test::read_file(dir / "view.json"), *data);
 
   const json j = json::parse(*data);
   EXPECT_EQ(j.at("mesh").at("positions"), b64_floats(mesh.positions));
@@ -443,6 +445,20 @@ TEST(WriteViewPage, WritesNothingWhenTheDataIsRefused) {
   ASSERT_FALSE(written.has_value());
   EXPECT_EQ(written.error().to_string(), "ring.stl: the slice report is not JSON");
   EXPECT_FALSE(std::filesystem::exists(dir / "page.html"));
+}
+
+TEST(WriteViewPageData, WritesTheDataAloneOrNothingWhenItIsRefused) {
+  test::TempDir dir("view-page");
+  ViewPage page;
+  page.title = "probe-5e2b";
+  page.stack = two_layer_stack(true);
+  ASSERT_TRUE(write_view_page_data(dir / "view.json", page).has_value());
+  EXPECT_EQ(test::read_file(dir / "view.json"), *view_page_data(page));
+  page.validation_json = "{";
+  const Result<void> refused = write_view_page_data(dir / "refused.json", page);
+  ASSERT_FALSE(refused.has_value());
+  EXPECT_EQ(refused.error().message, "the validation report is not JSON");
+  EXPECT_FALSE(std::filesystem::exists(dir / "refused.json"));
 }
 
 TEST(WriteViewPage, NamesAPathItCannotWrite) {
