@@ -447,7 +447,7 @@ TEST(WriteViewPage, WritesNothingWhenTheDataIsRefused) {
   EXPECT_FALSE(std::filesystem::exists(dir / "page.html"));
 }
 
-TEST(WriteViewPageData, WritesTheDataAloneOrNothingWhenItIsRefused) {
+TEST(WriteViewPageData, WritesTheDataAloneOrNothingWhenItIsRefusedOrCannotBeWritten) {
   test::TempDir dir("view-page");
   ViewPage page;
   page.title = "probe-5e2b";
@@ -459,6 +459,13 @@ TEST(WriteViewPageData, WritesTheDataAloneOrNothingWhenItIsRefused) {
   ASSERT_FALSE(refused.has_value());
   EXPECT_EQ(refused.error().message, "the validation report is not JSON");
   EXPECT_FALSE(std::filesystem::exists(dir / "refused.json"));
+  page.validation_json.clear();
+  std::filesystem::create_directory(dir / "taken.json");
+  const Result<void> unwritable = write_view_page_data(dir / "taken.json", page);
+  ASSERT_FALSE(unwritable.has_value());
+  EXPECT_EQ(
+      unwritable.error().to_string(),
+      (dir / "taken.json").string() + ": cannot write the file: a folder of that name exists");
 }
 
 TEST(WriteViewPage, NamesAPathItCannotWrite) {
