@@ -213,8 +213,10 @@ class MarkedDocument {
     kept_.push_back(std::move(bytes));
     return hold_base64(std::string_view(kept_.back()));
   }
-  /// The marker to put in the document for the "layers" object of `stack`.
+  /// The marker to put in the document for the "layers" object of `stack`. Once: a document
+  /// has one "layers".
   std::string hold_layers(const ViewStack& stack) {
+    STRATA_ASSERT(!layers_, "a page's data holds its layers once");
     layers_.emplace(stack);
     // With its key: a name holding the marker's text is written with its quotes escaped.
     held_.push_back({std::string(R"("layers":)").append(json(kLayersMarker).dump()),
