@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -54,10 +55,6 @@ void write_base64_pieces(std::string_view bytes, std::string& buffer, const Text
     sink(buffer);
   }
 }
-
-/// Stands for the layers in the page's JSON until their text replaces it; control characters
-/// make it a string no name or note can be.
-constexpr const char* kLayersMarker = "\x01strata-layers\x01";
 
 /// The text of a base64 string of `bytes`, with its quotes, at `to`; returns the end.
 char* write_quoted_base64(std::string_view bytes, char* to) {
@@ -191,20 +188,21 @@ class LayersText {
 
 /// The page's data as a JSON document in which long texts stand as markers: the layers, and base64
 /// values (the display mesh of a large model is megabytes of it), which the JSON library would
-/// look at a character at a time again. Each marker is a string of control characters, which no
-/// name or note can hold; as a value it follows its key's colon (a name holding the marker's text
-/// has its quotes escaped, and never matches). The marked texts are written where their markers
-/// stand as the document is handed on.
+/// look at a character at a time again. A marker is a string of control characters, found with
+/// its key's colon (the layers' with its key) before it, and replaced as the document is handed
+/// on. A name or note may hold the same text (a file name may hold control characters): the
+/// markers carry a salt, and a document in which a marker does not stand exactly once is
+/// composed again with the next salt.
 class MarkedDocument {
  public:
-  MarkedDocument() = default;
+  explicit MarkedDocument(std::uint32_t salt) : salt_(salt) {}
   // Its held texts point into what it keeps, and at the layers' text it holds.
   MarkedDocument(const MarkedDocument&) = delete;
   MarkedDocument& operator=(const MarkedDocument&) = delete;
 
   /// The marker to put in the document for the base64 text of `bytes`, which must outlive this.
   std::string hold_base64(std::string_view bytes) {
-    std::string marker = fmt::format("\x01strata-held-{}\x01", held_.size());
+    std::string marker = fmt::format("\x01strata-held-{}-{}\x01", salt_, held_.size());
     held_.push_back({std::string(":").append(json(marker).dump()), ":\"", bytes, nullptr});
     return marker;
   }
@@ -218,23 +216,25 @@ class MarkedDocument {
   std::string hold_layers(const ViewStack& stack) {
     STRATA_ASSERT(!layers_, "a page's data holds its layers once");
     layers_.emplace(stack);
-    // With its key: a name holding the marker's text is written with its quotes escaped.
-    held_.push_back({std::string(R"("layers":)").append(json(kLayersMarker).dump()),
-                     R"("layers":)",
-                     {},
-                     &*layers_});
-    return kLayersMarker;
+    std::string marker = fmt::format("\x01strata-layers-{}\x01", salt_);
+    held_.push_back(
+        {std::string(R"("layers":)").append(json(marker).dump()), R"("layers":)", {}, &*layers_});
+    return marker;
   }
 
-  void set_document(std::string document) {
+  /// Takes the document the markers were put in; false when a marker does not stand in it
+  /// exactly once (a name or note holds its text), and the document must be composed again.
+  [[nodiscard]] bool set_document(std::string document) {
     document_ = std::move(document);
     found_.clear();
     for (std::size_t k = 0; k < held_.size(); ++k) {
       const std::size_t at = document_.find(held_[k].pattern);
       STRATA_ASSERT(at != std::string::npos, "a held text's marker is in the page data");
+      if (document_.find(held_[k].pattern, at + 1) != std::string::npos) return false;
       found_.emplace_back(at, k);
     }
     std::sort(found_.begin(), found_.end());
+    return true;
   }
 
   /// Characters of the document with every held text in place.
@@ -273,6 +273,7 @@ class MarkedDocument {
     std::string_view bytes;    ///< to be written as a base64 string, when not the layers
     const LayersText* layers;
   };
+  std::uint32_t salt_;
   std::string document_;
   std::vector<Held> held_;
   std::vector<std::pair<std::size_t, std::size_t>> found_;  // (where, which), in order
@@ -407,8 +408,9 @@ TemplateParts template_parts() {
   return {page_template.substr(0, at), page_template.substr(at + detail::kViewDataMarker.size())};
 }
 
-/// The page's data as a marked document in `out` (which the page must outlive).
-Result<void> compose_page_data(const ViewPage& page, MarkedDocument& out) {
+/// The page's data as a marked document in `out` (which the page must outlive); false when a
+/// marker of `out` does not stand once in it (MarkedDocument::set_document).
+Result<bool> compose_page_data(const ViewPage& page, MarkedDocument& out) {
   json data;
   data["format"] = "strata-view";
   data["version"] = 1;
@@ -471,18 +473,29 @@ Result<void> compose_page_data(const ViewPage& page, MarkedDocument& out) {
   // Invalid UTF-8 in a name (a path of the model) is replaced rather than refused. The document
   // is escaped for its script element while the long texts, base64 and the layers, which hold
   // no "<", are still their markers: once, over the rest of the document alone.
-  out.set_document(escape_script_end(data.dump(-1, ' ', false, json::error_handler_t::replace)));
-  return {};
+  return out.set_document(
+      escape_script_end(data.dump(-1, ' ', false, json::error_handler_t::replace)));
+}
+
+/// The page's data as a marked document whose markers each stand once in it. A salt that a name
+/// or note collides with is passed by; the document's strings are few, so some salt is free.
+Result<std::unique_ptr<MarkedDocument>> page_document(const ViewPage& page) {
+  for (std::uint32_t salt = 0;; ++salt) {
+    auto document = std::make_unique<MarkedDocument>(salt);
+    const Result<bool> composed = compose_page_data(page, *document);
+    if (!composed) return composed.error();
+    if (*composed) return document;
+  }
 }
 
 }  // namespace
 
 Result<std::string> view_page_data(const ViewPage& page) {
-  MarkedDocument document;
-  if (auto ok = compose_page_data(page, document); !ok) return ok.error();
+  auto document = page_document(page);
+  if (!document) return document.error();
   std::string text;
-  text.reserve(document.size());
-  document.write([&](std::string_view piece) { text.append(piece); });
+  text.reserve((*document)->size());
+  (*document)->write([&](std::string_view piece) { text.append(piece); });
   return text;
 }
 
@@ -497,23 +510,23 @@ std::string view_page_with_data(std::string_view data) {
 }
 
 Result<void> write_view_page_data(const std::filesystem::path& path, const ViewPage& page) {
-  MarkedDocument document;
-  if (auto ok = compose_page_data(page, document); !ok) return ok.error();
+  auto document = page_document(page);
+  if (!document) return document.error();
   auto out = io::OutputFile::create(path);
   if (!out) return out.error();
-  document.write([&](std::string_view piece) { out->write(piece); });
+  (*document)->write([&](std::string_view piece) { out->write(piece); });
   return out->commit();
 }
 
 Result<void> write_view_page(const std::filesystem::path& path, const ViewPage& page) {
-  MarkedDocument document;
-  if (auto ok = compose_page_data(page, document); !ok) return ok.error();
+  auto document = page_document(page);
+  if (!document) return document.error();
   const TemplateParts parts = template_parts();
   // Written a piece at a time: the data of a large stack is never held whole.
   auto out = io::OutputFile::create(path);
   if (!out) return out.error();
   out->write(parts.before);
-  document.write([&](std::string_view piece) { out->write(piece); });
+  (*document)->write([&](std::string_view piece) { out->write(piece); });
   out->write(parts.after);
   return out->commit();
 }

@@ -1,5 +1,6 @@
 // The view page's data (web/DATA.md): the model's defects, the layers, the validation marks, the
 // refusals of reports that are not JSON, and the page written around it.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -66,8 +67,8 @@ TEST(ViewPageData, WritesTheLayersAsTheJsonLibraryWouldCharacterForCharacter) {
   // library writes for the same values, with and without scanline segments.
   for (const bool with_hatches : {true, false}) {
     ViewPage page;
-    page.title = "\x01strata-layers\x01";  // the layers' marker in a name stays the name
-    page.source_path = R"("layers":"\u0001strata-layers\u0001")";
+    page.title = "\x01strata-layers-0\x01";  // the layers' marker in a name stays the name
+    page.source_path = R"("layers":"\u0001strata-layers-0\u0001")";
     ViewStack& s = page.stack;
     s.stored = {0, 3, 6};
     s.stride = 3;
@@ -328,6 +329,38 @@ TEST(ViewPageData, EscapesTheEndOfAScriptElementOnBothSidesOfTheLayers) {
   const json j = json::parse(*data);
   EXPECT_EQ(j.at("check").at("reason"), "open</edge");
   EXPECT_EQ(j.at("title"), "</title");
+  EXPECT_EQ(j.at("layers").at("stored"), json::parse("[0, 2]"));
+}
+
+TEST(ViewPageData, KeepsANameThatHoldsTheTextOfAMarker) {
+  // The long values stand in the document as markers (control characters, "\u0001strata-...")
+  // until their text replaces them. A name or note holding the same text (a file name may hold
+  // control characters) stays itself, and every value is still in its place: the notes, the
+  // report and the title come before the volume's place in the document, and the report has a
+  // "layers" of its own.
+  ViewPage page;
+  page.stack = two_layer_stack(true);
+  page.mesh = DisplayMesh{{0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 1, 2}, 1, false};
+  json report = json::object();
+  // The markers of the first two salts, so that the document is composed three times.
+  std::vector<std::string> names;
+  for (int salt = 0; salt < 2; ++salt) {
+    for (int k = 0; k < 5; ++k) names.push_back(fmt::format("\x01strata-held-{}-{}\x01", salt, k));
+    names.push_back(fmt::format("\x01strata-layers-{}\x01", salt));
+  }
+  for (std::size_t n = 0; n < names.size(); ++n) report[fmt::format("name{}", n)] = names[n];
+  report["layers"] = names.back();
+  page.report_json = report.dump();
+  page.title = names[0];
+  page.notes = names;
+  const json j = data_of(page);
+  EXPECT_EQ(j.at("report"), report);
+  EXPECT_EQ(j.at("title"), names[0]);
+  EXPECT_EQ(j.at("notes"), json(names));
+  EXPECT_EQ(j.at("mesh").at("positions"), b64_floats(page.mesh->positions));
+  EXPECT_EQ(j.at("mesh").at("indices"), detail::base64(detail::as_bytes(page.mesh->indices)));
+  EXPECT_EQ(j.at("volume").at("data"),
+            detail::base64(detail::zlib_compress(std::string("\x03\x01", 2))));
   EXPECT_EQ(j.at("layers").at("stored"), json::parse("[0, 2]"));
 }
 
