@@ -8,6 +8,7 @@
 #include <deque>
 #include <limits>
 #include <map>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "exact/exact_arrangement_internal.hpp"
@@ -32,8 +33,11 @@ using Halfedge = Arrangement::Halfedge_const_handle;
 
 constexpr long long kUnset = std::numeric_limits<long long>::min();
 
+/// The point with its exact value held from the start: a point built from two exact numbers
+/// would compute its exact value again, under a lock, the first time a comparison of its
+/// intervals ties.
 Point to_kernel(const ExactPoint2& p) {
-  return Point(Kernel::FT(p.x.exact()), Kernel::FT(p.y.exact()));
+  return Point(Point::Rep(Kernel::Exact_kernel::Point_2(p.x.exact(), p.y.exact())));
 }
 
 ExactPoint2 from_kernel(const Point& p) {
@@ -46,9 +50,11 @@ struct PointLess {
   }
 };
 
+/// A segment between points held elsewhere (the layer's, or those made for it): a point is
+/// never copied, and a rational copied is an allocation or more.
 struct WeightedSegment {
-  ExactPoint2 from;
-  ExactPoint2 to;
+  const ExactPoint2* from;
+  const ExactPoint2* to;
   long long weight = 1;
 };
 
@@ -59,19 +65,20 @@ bool is_inside(FillRule rule, long long winding) {
 /// Adds, for every end point where segments start more often than they end (or the reverse), a
 /// horizontal edge from x_left to it carrying the difference, and the vertical pieces on x_left
 /// that close these edges up; x_left is the smallest of `left_of` and the end points' x. Returns
-/// the number of chain starts.
-std::uint32_t close_open_chains(std::vector<WeightedSegment>& segments, double left_of) {
+/// the number of chain starts. The points on x_left are added to `made`.
+std::uint32_t close_open_chains(std::vector<WeightedSegment>& segments, double left_of,
+                                std::deque<ExactPoint2>& made) {
   std::map<const ExactPoint2*, long long, PointLess> balance;
   const std::size_t original = segments.size();
   RoundedRational left{Rational(left_of)};
   const auto take_min = [&](const RoundedRational& x) {
-    if (compare_xy(ExactPoint2{x, left}, ExactPoint2{left, left}) < 0) left = x;
+    if (compare(x, left) < 0) left = x;
   };
   for (std::size_t i = 0; i < original; ++i) {
-    balance[&segments[i].from] += 1;
-    balance[&segments[i].to] -= 1;
-    take_min(segments[i].from.x);
-    take_min(segments[i].to.x);
+    balance[segments[i].from] += 1;
+    balance[segments[i].to] -= 1;
+    take_min(segments[i].from->x);
+    take_min(segments[i].to->x);
   }
   std::uint32_t starts = 0;
   std::vector<std::pair<const ExactPoint2*, long long>> unbalanced;
@@ -81,19 +88,16 @@ std::uint32_t close_open_chains(std::vector<WeightedSegment>& segments, double l
     if (w > 0) starts += static_cast<std::uint32_t>(w);
   }
   if (unbalanced.empty()) return 0;
-  std::sort(unbalanced.begin(), unbalanced.end(), [](const auto& a, const auto& b) {
-    return compare_xy(ExactPoint2{RoundedRational(), a.first->y},
-                      ExactPoint2{RoundedRational(), b.first->y}) < 0;
-  });
+  std::sort(unbalanced.begin(), unbalanced.end(),
+            [](const auto& a, const auto& b) { return compare(a.first->y, b.first->y) < 0; });
   std::vector<WeightedSegment> added;
-  long long carried = 0;  // weight of the vertical piece arriving from below
+  long long carried = 0;                      // weight of the vertical piece arriving from below
+  const ExactPoint2* corner_above = nullptr;  // (x_left, y) of the next y, once made
   for (std::size_t i = 0; i < unbalanced.size();) {
     const RoundedRational& y = unbalanced[i].first->y;
     long long here = 0;
     std::size_t k = i;
-    for (; k < unbalanced.size() &&
-           compare_xy(ExactPoint2{left, unbalanced[k].first->y}, ExactPoint2{left, y}) == 0;
-         ++k) {
+    for (; k < unbalanced.size() && compare(unbalanced[k].first->y, y) == 0; ++k) {
       here += unbalanced[k].second;
     }
     // The edges from (x_left, y) to each end point at this y, as pieces between consecutive end
@@ -105,16 +109,20 @@ std::uint32_t close_open_chains(std::vector<WeightedSegment>& segments, double l
               unbalanced.begin() + static_cast<std::ptrdiff_t>(k),
               [](const auto& a, const auto& b) { return compare_xy(*a.first, *b.first) < 0; });
     long long remaining = here;
-    ExactPoint2 from{left, y};
+    const ExactPoint2* corner =
+        corner_above != nullptr ? corner_above : &made.emplace_back(ExactPoint2{left, y});
+    corner_above = nullptr;
+    const ExactPoint2* from = corner;
     for (std::size_t j = i; j < k; ++j) {
-      const ExactPoint2& to = *unbalanced[j].first;
-      if (remaining != 0 && compare_xy(from, to) != 0) added.push_back({from, to, remaining});
+      const ExactPoint2* to = unbalanced[j].first;
+      if (remaining != 0 && compare_xy(*from, *to) != 0) added.push_back({from, to, remaining});
       remaining -= unbalanced[j].second;
       from = to;
     }
     carried -= here;  // the rays leaving this point take `here`, the piece above takes the rest
     if (carried != 0 && k < unbalanced.size()) {
-      added.push_back({ExactPoint2{left, y}, ExactPoint2{left, unbalanced[k].first->y}, carried});
+      corner_above = &made.emplace_back(ExactPoint2{left, unbalanced[k].first->y});
+      added.push_back({corner, corner_above, carried});
     }
     i = k;
   }
@@ -150,10 +158,11 @@ ArrangementContours arrangement_contours(const ExactLayer& layer, FillRule rule,
   std::vector<WeightedSegment> segments;
   segments.reserve(layer.segments.size());
   for (const ExactSegment& s : layer.segments) {
-    if (!s.zero_length) segments.push_back({layer.start_of(s), layer.end_of(s), 1});
+    if (!s.zero_length) segments.push_back({&layer.start_of(s), &layer.end_of(s), 1});
   }
   if (segments.empty()) return result;
-  result.open_chains = close_open_chains(segments, left_of);
+  std::deque<ExactPoint2> made;
+  result.open_chains = close_open_chains(segments, left_of, made);
 
   // Segments with the same two end points become one curve carrying the sum of their weights
   // (left to right), and a sum of zero no curve at all: it changes no face's winding number.
@@ -167,12 +176,12 @@ ArrangementContours arrangement_contours(const ExactLayer& layer, FillRule rule,
   std::vector<Oriented> oriented;
   oriented.reserve(segments.size());
   for (const WeightedSegment& s : segments) {
-    const int order = compare_xy(s.from, s.to);
+    const int order = compare_xy(*s.from, *s.to);
     STRATA_ASSERT(order != 0, "zero-length segment handed to the arrangement");
     if (order < 0) {
-      oriented.push_back({&s.from, &s.to, s.weight});
+      oriented.push_back({s.from, s.to, s.weight});
     } else {
-      oriented.push_back({&s.to, &s.from, -s.weight});
+      oriented.push_back({s.to, s.from, -s.weight});
     }
   }
   const auto compare_ends = [](const Oriented& a, const Oriented& b) {
@@ -183,6 +192,15 @@ ArrangementContours arrangement_contours(const ExactLayer& layer, FillRule rule,
             [&](const Oriented& a, const Oriented& b) { return compare_ends(a, b) < 0; });
   std::vector<Traits::X_monotone_curve_2> curves;
   curves.reserve(oriented.size());
+  // A point ends several curves: it is made a kernel point once (from its rational, an interval
+  // computed with MPFR), and the curves share it.
+  std::unordered_map<const ExactPoint2*, Point> kernel_points;
+  kernel_points.reserve(2 * oriented.size());
+  const auto kernel_point = [&](const ExactPoint2* p) -> const Point& {
+    auto [at, added] = kernel_points.try_emplace(p);
+    if (added) at->second = to_kernel(*p);
+    return at->second;
+  };
   for (std::size_t i = 0; i < oriented.size();) {
     long long weight = 0;
     std::size_t k = i;
@@ -190,8 +208,8 @@ ArrangementContours arrangement_contours(const ExactLayer& layer, FillRule rule,
       weight += oriented[k].weight;
     }
     if (weight != 0) {
-      curves.emplace_back(SegmentTraits::X_monotone_curve_2(to_kernel(*oriented[i].left),
-                                                            to_kernel(*oriented[i].right)),
+      curves.emplace_back(SegmentTraits::X_monotone_curve_2(kernel_point(oriented[i].left),
+                                                            kernel_point(oriented[i].right)),
                           weight);
     }
     i = k;

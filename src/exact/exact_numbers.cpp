@@ -215,14 +215,6 @@ std::optional<double> rounded_crossing_on_machine_integers(const Vec3& lo, const
 
 /// The crossing's value when it is one of the edge's coordinates: its end on the plane, or both
 /// ends alike on the axis.
-std::optional<double> crossing_on_a_vertex(const Vec3& lo, const Vec3& hi, double z, int axis) {
-  const double a = axis == 0 ? lo.x : lo.y;
-  const double b = axis == 0 ? hi.x : hi.y;
-  if (hi.z == z) return b;
-  if (a == b) return a;
-  return std::nullopt;
-}
-
 }  // namespace
 
 mpq_srcptr raw_mpq(const Rational& q) { return raw_of(q); }
@@ -279,22 +271,24 @@ double rounded_crossing(const Vec3& lo, const Vec3& hi, double z, int axis) {
 int compare_with_double(const RoundedRational& q, double d) {
   if (q.rounded < d) return -1;
   if (q.rounded > d) return 1;
+  if (q.is_double()) return 0;
   const Rational exact_d(d);
   if (q.exact() < exact_d) return -1;
   if (exact_d < q.exact()) return 1;
   return 0;
 }
 
+int compare(const RoundedRational& u, const RoundedRational& v) {
+  if (u.rounded < v.rounded) return -1;
+  if (u.rounded > v.rounded) return 1;
+  if (u.is_double() && v.is_double()) return 0;
+  const int sign = cmp(u.exact(), v.exact());
+  return (sign > 0) - (sign < 0);
+}
+
 int compare_xy(const ExactPoint2& a, const ExactPoint2& b) {
-  const auto cmp = [](const RoundedRational& u, const RoundedRational& v) {
-    if (u.rounded < v.rounded) return -1;
-    if (u.rounded > v.rounded) return 1;
-    if (u.exact() < v.exact()) return -1;
-    if (v.exact() < u.exact()) return 1;
-    return 0;
-  };
-  const int cx = cmp(a.x, b.x);
-  return cx != 0 ? cx : cmp(a.y, b.y);
+  const int cx = compare(a.x, b.x);
+  return cx != 0 ? cx : compare(a.y, b.y);
 }
 
 }  // namespace strata::exact::detail

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -37,6 +38,17 @@ void set_scaled_quotient(mpq_class& out, const mpz_class& num, const mpz_class& 
 Rational exact_crossing(const Vec3& lo, const Vec3& hi, double z, int axis);
 double rounded_crossing(const Vec3& lo, const Vec3& hi, double z, int axis);
 
+/// The crossing when it is a double itself: the upper end's coordinate when that end lies on the
+/// plane, or the coordinate the edge keeps all along; otherwise none.
+inline std::optional<double> crossing_on_a_vertex(const Vec3& lo, const Vec3& hi, double z,
+                                                  int axis) {
+  const double a = axis == 0 ? lo.x : lo.y;
+  const double b = axis == 0 ? hi.x : hi.y;
+  if (hi.z == z) return b;
+  if (a == b) return a;
+  return std::nullopt;
+}
+
 /// An exact value with its nearest double, so comparisons with doubles are decided by the double
 /// unless they tie (rounding to nearest is monotone: round(q) < d implies q < d). A crossing's
 /// exact value is computed when first asked for: most comparisons never ask.
@@ -52,11 +64,15 @@ class RoundedRational {
   static RoundedRational of_double(double v) {
     RoundedRational out;
     out.rounded = v + 0.0;
+    out.is_double_ = true;
     return out;
   }
   /// The crossing of the edge from lo (below z) to hi (above z) with the plane z on `axis` (0
   /// for x, 1 for y); the vertices must outlive this value.
   static RoundedRational crossing(const Vec3& lo, const Vec3& hi, double z, int axis) {
+    if (const std::optional<double> v = crossing_on_a_vertex(lo, hi, z, axis)) {
+      return of_double(*v);
+    }
     const double rounded = rounded_crossing(lo, hi, z, axis);
     if (std::isnan(rounded)) return RoundedRational(exact_crossing(lo, hi, z, axis));
     RoundedRational out;
@@ -77,13 +93,18 @@ class RoundedRational {
         lo_(other.lo_),
         hi_(other.hi_),
         z_(other.z_),
-        axis_(other.axis_) {}
+        axis_(other.axis_),
+        is_double_(other.is_double_) {}
   RoundedRational& operator=(const RoundedRational& other) {
     if (this != &other) *this = RoundedRational(other);
     return *this;
   }
   RoundedRational(RoundedRational&&) noexcept = default;
   RoundedRational& operator=(RoundedRational&&) noexcept = default;
+
+  /// Whether the value is known to be `rounded` itself (then two such values that round alike
+  /// are equal, with no rational built). False says nothing.
+  bool is_double() const { return is_double_; }
 
   /// The exact value (computed on the first call; not to be called from two threads at once).
   const Rational& exact() const {
@@ -101,6 +122,7 @@ class RoundedRational {
   const Vec3* hi_ = nullptr;
   double z_ = 0.0;
   int axis_ = 0;
+  bool is_double_ = false;
 };
 
 /// Sign of (q - d), exact.
@@ -113,6 +135,9 @@ struct ExactPoint2 {
 
   Point2 rounded() const { return {x.rounded, y.rounded}; }
 };
+
+/// Exact comparison of two values: -1, 0, +1.
+int compare(const RoundedRational& u, const RoundedRational& v);
 
 /// Exact lexicographic (x, then y) comparison: -1, 0, +1.
 int compare_xy(const ExactPoint2& a, const ExactPoint2& b);

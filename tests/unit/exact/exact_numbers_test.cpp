@@ -181,6 +181,62 @@ TEST(CompareXy, ComparesXThenYExactly) {
   EXPECT_EQ(compare_xy(point(one, 3), point(one, 3)), 0);
 }
 
+TEST(Compare, DecidesTiesOfTheRoundedValuesExactly) {
+  const RoundedRational one = RoundedRational::of_double(1.0);
+  const RoundedRational one_up(Rational(1) + Rational(scaled(1, 60)));
+  const RoundedRational one_down(Rational(1) - Rational(scaled(1, 60)));
+  ASSERT_EQ(one_up.rounded, 1.0);
+  ASSERT_EQ(one_down.rounded, 1.0);
+  EXPECT_EQ(compare(one, one_up), -1);
+  EXPECT_EQ(compare(one_up, one), 1);
+  EXPECT_EQ(compare(one_down, one), -1);
+  EXPECT_EQ(compare(one_down, one_up), -1);
+  EXPECT_EQ(compare(one, RoundedRational(Rational(1))), 0);
+  EXPECT_EQ(compare(one, RoundedRational::of_double(1.0)), 0);
+  EXPECT_EQ(compare(RoundedRational::of_double(0.5), one_down), -1);
+}
+
+TEST(RoundedRational, KnowsWhenACrossingIsADouble) {
+  // The upper end on the plane, or an edge that keeps its x: the crossing is that coordinate,
+  // known to be a double without a rational.
+  const Vec3 lo{0.1, 0.2, 0.0};
+  const Vec3 on_plane{0.7, -0.3, 0.3};
+  const Vec3 upright{0.1, 0.9, 0.9};
+  const RoundedRational at_end = RoundedRational::crossing(lo, on_plane, 0.3, 0);
+  EXPECT_TRUE(at_end.is_double());
+  EXPECT_EQ(at_end.rounded, 0.7);
+  EXPECT_EQ(at_end.exact(), Rational(0.7));
+  const RoundedRational kept = RoundedRational::crossing(lo, upright, 0.3, 0);
+  EXPECT_TRUE(kept.is_double());
+  EXPECT_EQ(kept.exact(), Rational(0.1));
+  // Its y changes along the edge: a rational, not a double.
+  const RoundedRational moving = RoundedRational::crossing(lo, upright, 0.3, 1);
+  EXPECT_FALSE(moving.is_double());
+  EXPECT_EQ(moving.exact(), test::crossing_as_written(lo, upright, 0.3, 1));
+  EXPECT_TRUE(RoundedRational::of_double(2.5).is_double());
+  EXPECT_FALSE(RoundedRational(Rational(1, 3)).is_double());
+  // Copies keep what they know; a value assigned over one takes the new value's.
+  const RoundedRational copy = at_end;
+  EXPECT_TRUE(copy.is_double());
+  RoundedRational assigned = at_end;
+  assigned = moving;
+  EXPECT_FALSE(assigned.is_double());
+  EXPECT_EQ(assigned.exact(), moving.exact());
+
+  // Equal as doubles and both doubles: equal. A crossing that only rounds to a double is
+  // decided by its rational.
+  EXPECT_EQ(compare(at_end, RoundedRational::of_double(0.7)), 0);
+  EXPECT_EQ(compare_with_double(kept, 0.1), 0);
+  const Vec3 a{1.0, 0.0, 0.0};
+  const Vec3 b{std::nextafter(1.0, 2.0), 0.0, 1.0};
+  const RoundedRational near_one = RoundedRational::crossing(a, b, 0.25, 0);
+  ASSERT_FALSE(near_one.is_double());
+  ASSERT_EQ(near_one.rounded, 1.0);
+  EXPECT_EQ(compare(near_one, RoundedRational::of_double(1.0)), 1);
+  EXPECT_EQ(compare(RoundedRational::of_double(1.0), near_one), -1);
+  EXPECT_EQ(compare_with_double(near_one, 1.0), 1);
+}
+
 /// Checks both axes of the crossing: its double is the rational's nearest (ties to even, below
 /// the normal range too), and its exact value is the rational.
 void expect_crossing(const Vec3& lo, const Vec3& hi, double z) {
