@@ -41,7 +41,10 @@ Point to_kernel(const ExactPoint2& p) {
 }
 
 ExactPoint2 from_kernel(const Point& p) {
-  return {RoundedRational(CGAL::exact(p.x())), RoundedRational(CGAL::exact(p.y()))};
+  // The exact point's own coordinates: p.x() would be a lazy number of its own, its interval
+  // computed again from the rational.
+  const auto& exact = CGAL::exact(p);
+  return {RoundedRational(exact.x()), RoundedRational(exact.y())};
 }
 
 struct PointLess {
