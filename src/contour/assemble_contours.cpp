@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "contour/chain_segments.hpp"
@@ -138,14 +140,10 @@ class CrossingPointGeometry {
     return sgn(det);
   }
   int exact_compare_x(detail::SegmentEnd a, detail::SegmentEnd b) const {
-    const Homogeneous pa = homogeneous(a);
-    const Homogeneous pb = homogeneous(b);
-    return sgn(mpq_class(pa.x * pb.w - pb.x * pa.w));
+    return exact_compare(a, b, 0);
   }
   int exact_compare_y(detail::SegmentEnd a, detail::SegmentEnd b) const {
-    const Homogeneous pa = homogeneous(a);
-    const Homogeneous pb = homogeneous(b);
-    return sgn(mpq_class(pa.y * pb.w - pb.y * pa.w));
+    return exact_compare(a, b, 1);
   }
 
  private:
@@ -156,6 +154,43 @@ class CrossingPointGeometry {
   const CrossedEdge& edge(detail::SegmentEnd p) const {
     const LayerSegment& s = layer_.segments[p.segment];
     return p.end == 0 ? s.start_edge : s.end_edge;
+  }
+
+  /// The end's coordinate on `axis` (0 for x, 1 for y) when it is a double itself: the upper
+  /// vertex on the plane, or an edge that keeps the coordinate all along.
+  std::optional<double> as_double(detail::SegmentEnd p, int axis) const {
+    const CrossedEdge& e = edge(p);
+    const Vec3& lo = mesh_.vertices[e.below];
+    const Vec3& hi = mesh_.vertices[e.above];
+    const double from = axis == 0 ? lo.x : lo.y;
+    const double to = axis == 0 ? hi.x : hi.y;
+    if (hi.z == layer_.z_mm) return to;
+    if (from == to) return from;
+    return std::nullopt;
+  }
+
+  /// The sign of a - b on `axis`: by the doubles when both ends are doubles (ends of vertical
+  /// edges, and vertices on the plane, tie often), else on the one coordinate in homogeneous
+  /// form, X / W.
+  int exact_compare(detail::SegmentEnd a, detail::SegmentEnd b, int axis) const {
+    const std::optional<double> da = as_double(a, axis);
+    const std::optional<double> db = da ? as_double(b, axis) : std::nullopt;
+    if (da && db) return (*da > *db) - (*da < *db);
+    const auto [xa, wa] = homogeneous_coordinate(a, axis);
+    const auto [xb, wb] = homogeneous_coordinate(b, axis);
+    return sgn(mpq_class(xa * wb - xb * wa));
+  }
+
+  std::pair<mpq_class, mpq_class> homogeneous_coordinate(detail::SegmentEnd p, int axis) const {
+    const CrossedEdge& e = edge(p);
+    const Vec3& lo = mesh_.vertices[e.below];
+    const Vec3& hi = mesh_.vertices[e.above];
+    const double from = axis == 0 ? lo.x : lo.y;
+    const double to = axis == 0 ? hi.x : hi.y;
+    if (hi.z == layer_.z_mm) return {mpq_class(to), mpq_class(1)};
+    const mpq_class w = mpq_class(hi.z) - mpq_class(lo.z);
+    const mpq_class t = mpq_class(layer_.z_mm) - mpq_class(lo.z);
+    return {mpq_class(mpq_class(from) * w + t * (mpq_class(to) - mpq_class(from))), w};
   }
 
   Homogeneous homogeneous(detail::SegmentEnd p) const {

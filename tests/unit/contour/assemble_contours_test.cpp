@@ -28,6 +28,26 @@ IndexedMesh two_boxes(Vec3 lo_a, Vec3 hi_a, Vec3 lo_b, Vec3 hi_b) {
   return m;
 }
 
+/// Adds the tetrahedron of four of `m`'s vertices, each facet facing away from the fourth corner.
+void add_tetrahedron(IndexedMesh& m, VertexIndex a, VertexIndex b, VertexIndex c, VertexIndex d) {
+  const auto orient = [&](VertexIndex p, VertexIndex q, VertexIndex r, VertexIndex s) {
+    const Vec3 &P = m.vertices[p], &Q = m.vertices[q], &R = m.vertices[r], &S = m.vertices[s];
+    const double ux = Q.x - P.x, uy = Q.y - P.y, uz = Q.z - P.z;
+    const double vx = R.x - P.x, vy = R.y - P.y, vz = R.z - P.z;
+    const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    const double side = nx * (S.x - P.x) + ny * (S.y - P.y) + nz * (S.z - P.z);
+    if (side > 0) {
+      m.triangles.push_back({p, r, q});
+    } else {
+      m.triangles.push_back({p, q, r});
+    }
+  };
+  orient(a, b, c, d);
+  orient(a, b, d, c);
+  orient(a, c, d, b);
+  orient(b, c, d, a);
+}
+
 TEST(AssembleContoursChecked, SeparateBoxesAreSimple) {
   const IndexedMesh m = two_boxes({0, 0, 0}, {10, 10, 10}, {12, 0, 0}, {20, 10, 10});
   const LayerContours c = assemble_contours(m, cut(m, 5));
@@ -84,29 +104,27 @@ TEST(AssembleContoursChecked, SlantedFacetsMeetingAtAnUnrepresentablePointTouch)
   IndexedMesh m;
   m.vertices = {{0, 0, 0}, {1, 3, 3}, {-6, 1, 0}, {-6, 1, 3},  // first
                 {0, 1, 0}, {1, 1, 3}, {6, 0, 0},  {6, 2, 3}};  // second
-  const auto add_tet = [&](VertexIndex a, VertexIndex b, VertexIndex c, VertexIndex d) {
-    // Orient each facet away from the fourth corner.
-    const auto orient = [&](VertexIndex p, VertexIndex q, VertexIndex r, VertexIndex s) {
-      const Vec3 &P = m.vertices[p], &Q = m.vertices[q], &R = m.vertices[r], &S = m.vertices[s];
-      const double ux = Q.x - P.x, uy = Q.y - P.y, uz = Q.z - P.z;
-      const double vx = R.x - P.x, vy = R.y - P.y, vz = R.z - P.z;
-      const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-      const double d = nx * (S.x - P.x) + ny * (S.y - P.y) + nz * (S.z - P.z);
-      if (d > 0) {
-        m.triangles.push_back({p, r, q});
-      } else {
-        m.triangles.push_back({p, q, r});
-      }
-    };
-    orient(a, b, c, d);
-    orient(a, b, d, c);
-    orient(a, c, d, b);
-    orient(b, c, d, a);
-  };
-  add_tet(0, 1, 2, 3);
-  add_tet(4, 5, 6, 7);
+  add_tetrahedron(m, 0, 1, 2, 3);
+  add_tetrahedron(m, 4, 5, 6, 7);
   EXPECT_TRUE(assemble_contours(m, cut(m, 1.0)).loops_cross);
   EXPECT_FALSE(assemble_contours(m, cut(m, 1.25)).loops_cross);
+}
+
+TEST(AssembleContoursChecked, CollinearSidesApartByLessThanTheMarginAtUnrepresentablePoints) {
+  // Two tetrahedra with a face each in the plane y = 0: at z = 1 their sections have sides on
+  // the line y = 0, the first's from x = -11/3 to 1/3, the second's from 1/3 + 2d/3 to 13/3.
+  // No double is any of these ends, and 2d/3 is far below the doubles' margin: only the exact
+  // order along the line tells a gap (d > 0) from a shared end (d = 0).
+  for (const double d : {0x1p-50, 0.0}) {
+    IndexedMesh m;
+    m.vertices = {{0, 0, 0}, {1, 0, 3}, {-6, 0, 0}, {-3, -2, 0},  // first
+                  {d, 0, 0}, {1, 0, 3}, {6, 0, 0},  {3, -2, 0}};  // second
+    add_tetrahedron(m, 0, 1, 2, 3);
+    add_tetrahedron(m, 4, 5, 6, 7);
+    const LayerContours c = assemble_contours(m, cut(m, 1.0));
+    ASSERT_EQ(c.loops.size(), 2u) << d;
+    EXPECT_EQ(c.loops_cross, d == 0.0) << d;
+  }
 }
 
 TEST(AssembleContoursChecked, NestedBoxesOfOneOrientationAreMisnested) {
