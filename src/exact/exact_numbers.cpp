@@ -213,8 +213,6 @@ std::optional<double> rounded_crossing_on_machine_integers(const Vec3& lo, const
   return round_quotient_bits(static_cast<std::uint64_t>(quotient), remainder != 0, negative, e - s);
 }
 
-/// The crossing's value when it is one of the edge's coordinates: its end on the plane, or both
-/// ends alike on the axis.
 }  // namespace
 
 mpq_srcptr raw_mpq(const Rational& q) { return raw_of(q); }
