@@ -247,7 +247,6 @@ void set_scaled_quotient(mpq_class& out, const mpz_class& num, const mpz_class& 
 }
 
 Rational exact_crossing(const Vec3& lo, const Vec3& hi, double z, int axis) {
-  if (const std::optional<double> v = crossing_on_a_vertex(lo, hi, z, axis)) return Rational(*v);
   thread_local CrossingCalculator calculator;
   calculator.start(lo, hi, z, axis);
   Rational out;
@@ -256,7 +255,6 @@ Rational exact_crossing(const Vec3& lo, const Vec3& hi, double z, int axis) {
 }
 
 double rounded_crossing(const Vec3& lo, const Vec3& hi, double z, int axis) {
-  if (const std::optional<double> v = crossing_on_a_vertex(lo, hi, z, axis)) return *v + 0.0;
   if (const std::optional<double> v = rounded_crossing_on_machine_integers(lo, hi, z, axis)) {
     return *v;
   }

@@ -34,7 +34,8 @@ void set_scaled_quotient(mpq_class& out, const mpz_class& num, const mpz_class& 
 /// The crossing of the edge from `lo` (below z) to `hi` (above z) with the plane at height z,
 /// on one axis: its exact value, and its nearest double without building that value (no rational
 /// is reduced or allocated). NaN when the nearest double lies below the normal range, where only
-/// the rational rounds it right.
+/// the rational rounds it right. Any crossing; RoundedRational::crossing takes those that are
+/// doubles (crossing_on_a_vertex) without them.
 Rational exact_crossing(const Vec3& lo, const Vec3& hi, double z, int axis);
 double rounded_crossing(const Vec3& lo, const Vec3& hi, double z, int axis);
 
