@@ -265,13 +265,7 @@ double rounded_crossing(const Vec3& lo, const Vec3& hi, double z, int axis) {
 }
 
 int compare_with_double(const RoundedRational& q, double d) {
-  if (q.rounded < d) return -1;
-  if (q.rounded > d) return 1;
-  if (q.is_double()) return 0;
-  const Rational exact_d(d);
-  if (q.exact() < exact_d) return -1;
-  if (exact_d < q.exact()) return 1;
-  return 0;
+  return compare(q, RoundedRational::of_double(d));
 }
 
 int compare(const RoundedRational& u, const RoundedRational& v) {
