@@ -509,26 +509,31 @@ std::string view_page_with_data(std::string_view data) {
   return page;
 }
 
-Result<void> write_view_page_data(const std::filesystem::path& path, const ViewPage& page) {
+namespace {
+
+/// Writes `before`, the page's data and `after` to `path` atomically, a piece at a time: the
+/// data of a large stack is never held whole.
+Result<void> write_data_between(const std::filesystem::path& path, const ViewPage& page,
+                                std::string_view before, std::string_view after) {
   auto document = page_document(page);
   if (!document) return document.error();
   auto out = io::OutputFile::create(path);
   if (!out) return out.error();
+  out->write(before);
   (*document)->write([&](std::string_view piece) { out->write(piece); });
+  out->write(after);
   return out->commit();
 }
 
+}  // namespace
+
+Result<void> write_view_page_data(const std::filesystem::path& path, const ViewPage& page) {
+  return write_data_between(path, page, {}, {});
+}
+
 Result<void> write_view_page(const std::filesystem::path& path, const ViewPage& page) {
-  auto document = page_document(page);
-  if (!document) return document.error();
   const TemplateParts parts = template_parts();
-  // Written a piece at a time: the data of a large stack is never held whole.
-  auto out = io::OutputFile::create(path);
-  if (!out) return out.error();
-  out->write(parts.before);
-  (*document)->write([&](std::string_view piece) { out->write(piece); });
-  out->write(parts.after);
-  return out->commit();
+  return write_data_between(path, page, parts.before, parts.after);
 }
 
 }  // namespace strata::view
