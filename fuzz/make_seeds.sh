@@ -8,7 +8,8 @@ cd "$(dirname "$0")"
 root=..
 adv=$root/data/adversarial
 
-for t in fuzz_stl_binary fuzz_stl_ascii fuzz_obj fuzz_off fuzz_ply fuzz_cells fuzz_3mf_assembly; do
+for t in fuzz_stl_binary fuzz_stl_ascii fuzz_obj fuzz_off fuzz_ply fuzz_cells fuzz_3mf_assembly \
+  fuzz_slice_kernels; do
   mkdir -p "corpus/$t"
   rm -f "corpus/$t"/seed-*
 done
@@ -207,6 +208,20 @@ write(T, "reserved_code.cells.txt", cells_ascii(2, 2, 1, [0, 2, 1, 3]))
 write(T, "missing_shell.cells.txt", "strata-cells 1\ngrid 1 1 1\norigin 0 0 0\nspacing 1 1 1\nlayer 0 z=0.5\n11\n")
 write(T, "wide_row.cells.txt", cells_ascii(40, 1, 2, ([3] + [1] * 38 + [3]) * 2))
 write(T, "short_row.cells.txt", "strata-cells 1\nshell 1\nspacing 1 1 1\norigin 0 0 0\ngrid 2 1 1\nlayer 0 z=0.5\n11\n")
+
+# The encoding of fuzz/fuzz_slice_kernels.cpp: two bytes of options and cell sizes, then nine
+# bytes a triangle, each a lattice coordinate (byte & 31) / 4 - 1 in cells.
+T = "fuzz_slice_kernels"
+def lattice(value_in_cells):
+    return int(round((value_in_cells + 1) * 4))
+def kernels_seed(how, sizes, tris):
+    return bytes([how, sizes]) + b"".join(bytes(lattice(c) for p in t for c in p) for t in tris)
+write(T, "cube_on_cell_faces.bin", kernels_seed(0x0C, 0, cube(0, 0, 0, 4)))
+write(T, "cube_through_centres.bin", kernels_seed(0x10, 0, cube(0.5, 0.5, 0.5, 3)))
+write(T, "tetra_evenodd_layers.bin", kernels_seed(0x0B, 1, tetra(5)))
+write(T, "cube_unequal_cells_offset.bin", kernels_seed(0x3C, 2 | 8, cube(0.25, 0.75, 0.5, 4.5)))
+write(T, "inverted_cube_tenths_nudged.bin", kernels_seed(0x94, 4, cube(0, 0, 0, 5, flip=True)))
+write(T, "open_box_wide_shell.bin", kernels_seed(0x1C, 0, cube(0, 0, 0, 6)[:-2]))
 
 # The model encoding of fuzz/fuzz_3mf_assembly.cpp (see its header comment).
 T = "fuzz_3mf_assembly"
