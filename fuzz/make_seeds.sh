@@ -9,7 +9,7 @@ root=..
 adv=$root/data/adversarial
 
 for t in fuzz_stl_binary fuzz_stl_ascii fuzz_obj fuzz_off fuzz_ply fuzz_cells fuzz_3mf_assembly \
-  fuzz_slice_kernels; do
+  fuzz_slice_kernels fuzz_serve_route; do
   mkdir -p "corpus/$t"
   rm -f "corpus/$t"/seed-*
 done
@@ -222,6 +222,21 @@ write(T, "tetra_evenodd_layers.bin", kernels_seed(0x0B, 1, tetra(5)))
 write(T, "cube_unequal_cells_offset.bin", kernels_seed(0x3C, 2 | 8, cube(0.25, 0.75, 0.5, 4.5)))
 write(T, "inverted_cube_tenths_nudged.bin", kernels_seed(0x94, 4, cube(0, 0, 0, 5, flip=True)))
 write(T, "open_box_wide_shell.bin", kernels_seed(0x1C, 0, cube(0, 0, 0, 6)[:-2]))
+
+# Request lines of strata serve, as fuzz/fuzz_serve_route.cpp reads them: "METHOD TARGET".
+T = "fuzz_serve_route"
+for name, line in [("app", "GET /"), ("info", "GET /api/info"), ("jobs", "GET /api/jobs"),
+                   ("upload", "POST /api/jobs?name=part%20one%281%29.stl.gz"),
+                   ("upload_path", "POST /api/jobs?name=C%3A%5Cmodels%5Cpart.STL"),
+                   ("status", "GET /api/jobs/0a1b2c3d4e5f6789"),
+                   ("slice", "POST /api/jobs/ff/slice"), ("cancel", "POST /api/jobs/1/cancel"),
+                   ("validate", "POST /api/jobs/abc/validate"), ("remove", "DELETE /api/jobs/9"),
+                   ("view_data", "GET /api/jobs/12/view.json"),
+                   ("file", "GET /api/jobs/12/files/cells"), ("viewer", "GET /viewer?job=3e&x=1"),
+                   ("dot_dot", "GET /api/jobs/12/files/../../etc/passwd"),
+                   ("encoded_dot", "GET /api/jobs/12/files/%2e%2e"),
+                   ("wrong_method", "PUT /api/jobs"), ("bad_escape", "GET /api/jobs?name=%zz")]:
+    write(T, name + ".txt", line)
 
 # The model encoding of fuzz/fuzz_3mf_assembly.cpp (see its header comment).
 T = "fuzz_3mf_assembly"
