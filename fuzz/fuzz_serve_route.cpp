@@ -1,9 +1,10 @@
 // The bytes as the request line of `strata serve` (a method, a space, the target) and as a Host
-// header: the router must answer every one, and what it accepts must be safe to act on. A route
-// to a job names a valid job id; an upload names a file that passes the name check, holds no
-// path separator and does not start with '.'; a download names one of the file kinds; a refusal
-// says why; a path holding ".." is never routed. The same bytes go through the percent decoding and
-// the name check on their own.
+// header. The router must answer every request line, and what it routes must be safe to act on:
+// a route to a job names a valid job id; an upload names a file that passes the name check, holds
+// no path separator and does not start with '.'; a download names one of the file kinds; a
+// refusal says why; a path holding ".." is never routed. The same bytes also go through the
+// percent decoding and the name check on their own, and a host passes for the loopback interface
+// only by one of its names.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -83,6 +84,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } else {
     check(!name.error().message.empty(), "a refused upload name says why");
   }
-  (void)is_loopback_host(bytes);
+  // The guard against DNS rebinding: no other name passes for the loopback interface.
+  if (is_loopback_host(bytes)) {
+    const std::string_view host = bytes.front() == '[' ? bytes.substr(0, bytes.find(']') + 1)
+                                                       : bytes.substr(0, bytes.find(':'));
+    check(host == "localhost" || host == "127.0.0.1" || host == "[::1]",
+          "only a loopback name passes for the loopback host");
+  }
   return 0;
 }
