@@ -17,8 +17,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <string_view>
@@ -185,10 +183,9 @@ void check_zip_append(std::string_view bytes) {
   if (!patched) return;
   const bool ends_with_end_record =
       patched->size() >= 22 && patched->compare(patched->size() - 22, 4, "PK\x05\x06") == 0;
-  if (!ends_with_end_record || strata::io::detail::append_empty_zip_entry(*patched, kName)) {
-    std::fprintf(stderr, "fuzz check failed: an appended zip entry is not found again\n");
-    std::abort();
-  }
+  strata::fuzz::check(
+      ends_with_end_record && !strata::io::detail::append_empty_zip_entry(*patched, kName),
+      "an appended zip entry is not found again");
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -8,24 +8,17 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <string_view>
 
+#include "fuzz_support.hpp"
 #include "serve/api_internal.hpp"
 #include "serve/route_internal.hpp"
 
 namespace {
 
 using namespace strata::serve::detail;
-
-void check(bool condition, const char* what) {
-  if (condition) return;
-  std::fprintf(stderr, "fuzz check failed: %s\n", what);
-  std::fflush(stderr);
-  std::abort();
-}
+using strata::fuzz::check;
 
 bool safe_name(std::string_view name) {
   return !name.empty() && name.front() != '.' && name.find('/') == std::string_view::npos &&
@@ -36,7 +29,7 @@ bool safe_name(std::string_view name) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+  const std::string_view bytes = strata::fuzz::as_bytes(data, size);
   const std::size_t space = bytes.find(' ');
   const std::string_view method = space == std::string_view::npos ? "GET" : bytes.substr(0, space);
   const std::string_view target = space == std::string_view::npos ? bytes : bytes.substr(space + 1);

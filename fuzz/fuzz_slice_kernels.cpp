@@ -24,11 +24,15 @@
 #include <span>
 #include <vector>
 
+#include "fuzz_support.hpp"
 #include "strata/exact/slice_exact.hpp"
 #include "strata/mesh/weld_vertices.hpp"
 #include "strata/pipeline/layer_sink.hpp"
 #include "strata/slice/grid_spec.hpp"
 #include "strata/slicer/slice_model.hpp"
+#include "strata/voxel/boundary_shell.hpp"
+#include "support/collecting_sink.hpp"
+#include "support/exact_crossing.hpp"
 #include "voxel/point_triangle_distance_internal.hpp"
 
 namespace {
@@ -41,28 +45,12 @@ constexpr std::size_t kMaxTriangles = 12;
 constexpr std::uint32_t kMaxCellsXY = 32;
 constexpr std::uint32_t kMaxCellsZ = 16;
 
-[[noreturn]] void fail(const char* what, std::uint32_t i = 0, std::uint32_t j = 0,
-                       std::uint32_t k = 0, int fast = 0, int other = 0) {
-  std::fprintf(stderr, "fuzz check failed: %s at cell (%u, %u, %u): %d against %d\n", what, i, j, k,
-               fast, other);
-  std::fflush(stderr);
-  std::abort();
+/// Fails naming the cell, the fast path's class and the one it is held to.
+[[noreturn]] void fail_at(const char* what, std::uint32_t i, std::uint32_t j, std::uint32_t k,
+                          int fast, int other) {
+  std::fprintf(stderr, "at cell (%u, %u, %u): %d against %d\n", i, j, k, fast, other);
+  fuzz::fail(what);
 }
-
-/// Every layer's classes, in order.
-class KeepingSink final : public LayerSink {
- public:
-  Result<void> begin(const SliceRunInfo&) override { return {}; }
-  Result<void> add_layer(const LayerResult& layer) override {
-    layers.push_back(layer.cells);
-    return {};
-  }
-  Result<void> finish() override { return {}; }
-  void abort() noexcept override {}
-  bool needs_hatches() const override { return false; }
-
-  std::vector<std::vector<CellClass>> layers;
-};
 
 /// A coordinate on the lattice of quarter cells from -1 to 6.75 cells, nudged by one ulp either
 /// way when the byte's top bits ask it and nudges are on.
@@ -81,16 +69,17 @@ double coordinate(std::uint8_t byte, double cell, bool nudges) {
 
 std::vector<std::vector<CellClass>> slice_with(bool exact, const IndexedMesh& mesh,
                                                const GridSpec& grid, const SliceOptions& options) {
-  KeepingSink sink;
+  testing::CollectingSink sink;
+  sink.reads_hatches = false;
   LayerSink* sinks[] = {&sink};
   const Result<SliceSummary> summary = exact ? slice_model_exact(mesh, grid, options, sinks)
                                              : slice_model(mesh, grid, options, sinks);
   if (!summary) {
     std::fprintf(stderr, "%s path: %s\n", exact ? "exact" : "fast",
                  summary.error().to_string().c_str());
-    fail("a path fails on a mesh of finite coordinates under nonzero or evenodd");
+    fuzz::fail("a path fails on a mesh of finite coordinates under nonzero or evenodd");
   }
-  if (sink.layers.size() != grid.nz) fail("a path sends every layer");
+  fuzz::check(sink.layers.size() == grid.nz, "a path sends every layer");
   return sink.layers;
 }
 
@@ -108,7 +97,6 @@ std::vector<std::vector<bool>> inside_rule(const IndexedMesh& mesh, const GridSp
   std::vector<std::vector<bool>> solid(grid.nz, std::vector<bool>(grid.cells_per_layer()));
   for (std::uint32_t k = 0; k < grid.nz; ++k) {
     const double zk = grid.zk(k);
-    const mpq_class z(zk);
     std::vector<std::pair<RationalPoint, RationalPoint>> segments;
     std::vector<int> signs;
     for (const auto& f : mesh.triangles) {
@@ -118,12 +106,11 @@ std::vector<std::vector<bool>> inside_rule(const IndexedMesh& mesh, const GridSp
         const Vec3& p = *v[e];
         const Vec3& q = *v[(e + 1) % 3];
         if ((p.z < zk) == (q.z < zk)) continue;
-        const mpq_class s = (z - mpq_class(p.z)) / (mpq_class(q.z) - mpq_class(p.z));
-        ends.push_back({mpq_class(p.x) + s * (mpq_class(q.x) - mpq_class(p.x)),
-                        mpq_class(p.y) + s * (mpq_class(q.y) - mpq_class(p.y))});
+        ends.push_back(
+            {test::crossing_as_written(p, q, zk, 0), test::crossing_as_written(p, q, zk, 1)});
       }
       if (ends.empty()) continue;
-      if (ends.size() != 2) fail("a facet crosses a plane in two edges or none");
+      fuzz::check(ends.size() == 2, "a facet crosses a plane in two edges or none");
       const auto d = [](double a, double b) -> mpq_class { return mpq_class(a) - mpq_class(b); };
       const mpq_class nx =
           d(v[1]->y, v[0]->y) * d(v[2]->z, v[0]->z) - d(v[1]->z, v[0]->z) * d(v[2]->y, v[0]->y);
@@ -163,12 +150,8 @@ void check_shell(const std::vector<std::vector<CellClass>>& layers, const Indexe
                                                static_cast<std::size_t>(i)] != CellClass::Empty;
   };
   const double t = options.shell_mm;
-  // The layers mode's ring count (BoundaryShell::reach_layers); the distance mode looks for an
-  // empty 6-neighbour only.
-  const auto rings = options.shell_mode == ShellMode::Layers
-                         ? static_cast<std::int64_t>(std::clamp(
-                               std::floor(t / std::min({grid.dx, grid.dy, grid.dz})), 1.0, 255.0))
-                         : std::int64_t{1};
+  // The layers mode's ring count; 1 in the distance mode, which looks for an empty 6-neighbour.
+  const std::int64_t rings = BoundaryShell::reach_layers(grid, options.shell_mode, t);
   for (std::uint32_t k = 0; k < grid.nz; ++k) {
     for (std::uint32_t j = 0; j < grid.ny; ++j) {
       for (std::uint32_t i = 0; i < grid.nx; ++i) {
@@ -199,8 +182,8 @@ void check_shell(const std::vector<std::vector<CellClass>>& layers, const Indexe
         const CellClass want = boundary ? CellClass::Boundary : CellClass::Interior;
         const CellClass got = layers[k][std::size_t{j} * grid.nx + i];
         if (got != want) {
-          fail("the shell differs from its definition", i, j, k, static_cast<int>(got),
-               static_cast<int>(want));
+          fail_at("the shell differs from its definition", i, j, k, static_cast<int>(got),
+                  static_cast<int>(want));
         }
       }
     }
@@ -253,22 +236,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   const auto fast = slice_with(false, mesh, *grid, options);
   const auto exact = slice_with(true, mesh, *grid, options);
-  for (std::uint32_t k = 0; k < grid->nz; ++k) {
-    for (std::size_t c = 0; c < fast[k].size(); ++c) {
-      if (fast[k][c] != exact[k][c]) {
-        fail("the fast path's cell differs from the exact path's",
-             static_cast<std::uint32_t>(c % grid->nx), static_cast<std::uint32_t>(c / grid->nx), k,
-             static_cast<int>(fast[k][c]), static_cast<int>(exact[k][c]));
-      }
-    }
-  }
   const auto rule = inside_rule(mesh, *grid, options);
   for (std::uint32_t k = 0; k < grid->nz; ++k) {
     for (std::size_t c = 0; c < fast[k].size(); ++c) {
+      const auto i = static_cast<std::uint32_t>(c % grid->nx);
+      const auto j = static_cast<std::uint32_t>(c / grid->nx);
+      const int got = static_cast<int>(fast[k][c]);
+      if (fast[k][c] != exact[k][c]) {
+        fail_at("the fast path's cell differs from the exact path's", i, j, k, got,
+                static_cast<int>(exact[k][c]));
+      }
       if ((fast[k][c] != CellClass::Empty) != rule[k][c]) {
-        fail("a solid cell differs from SPEC's inside rule",
-             static_cast<std::uint32_t>(c % grid->nx), static_cast<std::uint32_t>(c / grid->nx), k,
-             static_cast<int>(fast[k][c]), rule[k][c] ? 1 : 0);
+        fail_at("a solid cell differs from SPEC's inside rule", i, j, k, got, rule[k][c] ? 1 : 0);
       }
     }
   }

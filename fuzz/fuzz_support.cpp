@@ -26,16 +26,6 @@ constexpr double kMinSliceExtentMm = 1e-30;
 constexpr std::uint32_t kMaxCellsXY = 64;
 constexpr std::uint32_t kMaxCellsZ = 16;
 
-[[noreturn]] void fail(const char* what) {
-  std::fprintf(stderr, "fuzz check failed: %s\n", what);
-  std::fflush(stderr);
-  std::abort();
-}
-
-void check(bool condition, const char* what) {
-  if (!condition) fail(what);
-}
-
 /// Checks what the pipeline promises every sink: layers in order, nx * ny valid classes each.
 class CheckingSink final : public LayerSink {
  public:
@@ -79,6 +69,16 @@ class CheckingSink final : public LayerSink {
 };
 
 }  // namespace
+
+void fail(const char* what) {
+  std::fprintf(stderr, "fuzz check failed: %s\n", what);
+  std::fflush(stderr);
+  std::abort();
+}
+
+void check(bool condition, const char* what) {
+  if (!condition) fail(what);
+}
 
 io::ReadLimits read_limits() {
   io::ReadLimits limits;

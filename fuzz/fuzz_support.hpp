@@ -12,6 +12,12 @@
 /// readers promise, and a slice of every mesh read on a tiny grid.
 namespace strata::fuzz {
 
+/// Aborts with "fuzz check failed: `what`" (libFuzzer keeps the input).
+[[noreturn]] void fail(const char* what);
+
+/// fail(what) unless `condition` holds.
+void check(bool condition, const char* what);
+
 /// Limits small enough that no input makes a fuzz run allocate more than a few tens of MB.
 io::ReadLimits read_limits();
 
