@@ -9,7 +9,7 @@ root=..
 adv=$root/data/adversarial
 
 for t in fuzz_stl_binary fuzz_stl_ascii fuzz_obj fuzz_off fuzz_ply fuzz_cells fuzz_3mf_assembly \
-  fuzz_slice_kernels fuzz_serve_route; do
+  fuzz_slice_kernels fuzz_serve_route fuzz_slice_options; do
   mkdir -p "corpus/$t"
   rm -f "corpus/$t"/seed-*
 done
@@ -237,6 +237,25 @@ for name, line in [("app", "GET /"), ("info", "GET /api/info"), ("jobs", "GET /a
                    ("encoded_dot", "GET /api/jobs/12/files/%2e%2e"),
                    ("wrong_method", "PUT /api/jobs"), ("bad_escape", "GET /api/jobs?name=%zz")]:
     write(T, name + ".txt", line)
+
+# The options of a slice request, as the page sends them (web/src/app/options_form.js), and a
+# few it never sends.
+T = "fuzz_slice_options"
+for name, text in [
+        ("page_defaults", '{"layer":0.1,"cell":0.1,"shell":0.5,"shell_mode":"distance",'
+                          '"fill_rule":"nonzero","scan_offset":0,"kernel":"fast",'
+                          '"repair":false,"fill_holes":false}'),
+        ("every_option", '{"layer":0.25,"dx":0.2,"dy":0.3,"shell":2,"shell_mode":"layers",'
+                         '"fill_rule":"evenodd","scan_offset":-0.05,"kernel":"exact",'
+                         '"origin":[-1.5,0,2e1],"repair":true,"fill_holes":true}'),
+        ("empty", '{}'), ("nulls", '{"cell":null,"origin":null,"kernel":null}'),
+        ("cell_and_dx", '{"cell":0.1,"dx":0.2}'), ("holes_without_repair", '{"fill_holes":true}'),
+        ("unknown_key", '{"threads":4}'), ("negative_shell", '{"shell":-1}'),
+        ("huge_number", '{"layer":1e400}'), ("tiny_cell", '{"cell":5e-324}'),
+        ("word_for_number", '{"layer":"0.1"}'), ("short_origin", '{"origin":[1,2]}'),
+        ("duplicate_key", '{"layer":0.2,"layer":-1}'), ("winding", '{"fill_rule":"winding"}'),
+        ("not_an_object", '[0.1]'), ("truncated", '{"layer":0.')]:
+    write(T, name + ".json", text)
 
 # The model encoding of fuzz/fuzz_3mf_assembly.cpp (see its header comment).
 T = "fuzz_3mf_assembly"

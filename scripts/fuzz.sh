@@ -12,7 +12,7 @@ shift || true
 targets=("$@")
 if ((${#targets[@]} == 0)); then
   targets=(fuzz_stl_binary fuzz_stl_ascii fuzz_obj fuzz_off fuzz_ply fuzz_cells fuzz_3mf_assembly
-           fuzz_slice_kernels fuzz_serve_route)
+           fuzz_slice_kernels fuzz_serve_route fuzz_slice_options)
 fi
 
 bash scripts/setup.sh sanitizers
