@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -84,7 +85,9 @@ class SegmentEdgeIndex {
 template <class Segment>
 std::vector<SegmentChain> chain_segments(const std::vector<Segment>& segments) {
   const SegmentEdgeIndex by_start(segments, true);
-  const SegmentEdgeIndex by_end(segments, false);
+  // Only an open chain walks backwards: the index by end edge is built on the first (most
+  // layers have none).
+  std::optional<SegmentEdgeIndex> by_end;
   std::vector<bool> used(segments.size(), false);
   std::vector<SegmentChain> chains;
   for (std::uint32_t seed = 0; seed < segments.size(); ++seed) {
@@ -109,8 +112,9 @@ std::vector<SegmentChain> chain_segments(const std::vector<Segment>& segments) {
       // Backward: extend the open chain at its start as far as it goes.
       std::vector<std::uint32_t> head;
       std::uint64_t key = start_key;
+      if (!by_end) by_end.emplace(segments, false);
       while (true) {
-        const std::int64_t previous = by_end.take(key, used);
+        const std::int64_t previous = by_end->take(key, used);
         if (previous < 0) break;
         used[previous] = true;
         head.push_back(static_cast<std::uint32_t>(previous));
