@@ -5,10 +5,9 @@
 // request said: each number given is the one set, each word given is the one set and one of its
 // choices, each flag likewise, the origin its three numbers; an option left out (or null) keeps
 // the command line's default; holes are filled only in a repair.
-#include <nlohmann/json.hpp>
-
 #include <cstddef>
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
