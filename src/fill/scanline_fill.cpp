@@ -113,8 +113,9 @@ std::vector<RowCrossing> collect_crossings(const IndexedMesh& mesh, const LayerS
     // Rows whose scanline lies at or below each end point (a point on the line counts as above).
     const auto rows_below = [&](const Vec3& lo, const Vec3& hi, const Point2& approx) {
       return detail::count_prefix(
-          (approx.y - y_base) / grid.dy + 0.5, grid.ny,
-          [&](std::uint32_t j) { return detail::crossing_y_sign(lo, hi, z, row_y(j)) >= 0; });
+          (approx.y - y_base) / grid.dy + 0.5, grid.ny, [&](std::uint32_t j) {
+            return detail::crossing_y_sign(lo, hi, z, row_y(j), approx.y) >= 0;
+          });
     };
     const std::uint32_t rows_p = rows_below(p_lo, p_hi, s.start);
     const std::uint32_t rows_q = rows_below(q_lo, q_hi, s.end);

@@ -7,6 +7,8 @@
 //   (lo.x - c) * w + (z - lo.z) * (hi.x - lo.x),
 // a polynomial in the input coordinates and the grid's double values, evaluated exactly.
 
+#include <cmath>
+
 #include "predicates/filtered_sign.hpp"
 #include "strata/mesh/vec3.hpp"
 
@@ -23,6 +25,29 @@ inline int crossing_y_sign(const Vec3& lo, const Vec3& hi, double z, double y) {
     N r = (N(lo.y) - N(y)) * (N(hi.z) - N(lo.z)) + (N(z) - N(lo.z)) * (N(hi.y) - N(lo.y));
     return r;
   });
+}
+
+/// A bound of |crossing_point(lo, hi, z).y - P.y| (likewise x) from the edge's two coordinates
+/// a = lo.y and b = hi.y. crossing_point() rounds six times: t = (z - lo.z) / (hi.z - lo.z) is
+/// within a factor 1 + 3.01u of its exact value T in (0, 1] (u = 2^-53), t (b - a) within
+/// 5.01u |b - a| of T (b - a), and the sum a + t (b - a) within u (|a| + 1.01 |b - a|) of its
+/// own; in all less than 7.1u (|a| + |b|). 2^-49 = 16u leaves a factor of two for the rounding
+/// of the bound and of the caller's comparison, and for a subnormal t; the second term covers
+/// subnormal results, whose roundings are absolute.
+inline double crossing_point_error(double a, double b) {
+  return (std::fabs(a) + std::fabs(b)) * 0x1p-49 + 0x1p-1000;
+}
+
+/// crossing_y_sign(lo, hi, z, y), given approx_y = crossing_point(lo, hi, z).y: decided by
+/// approx_y alone when it lies farther from y than its error bound (nearly always on a grid of
+/// cells much wider than an ulp), by the exact predicate otherwise. A non-finite approx_y or
+/// bound compares false and goes to the predicate.
+inline int crossing_y_sign(const Vec3& lo, const Vec3& hi, double z, double y, double approx_y) {
+  const double apart = approx_y - y;  // its sign is that of approx_y - y, exactly
+  const double bound = crossing_point_error(lo.y, hi.y);
+  if (apart > bound) return 1;
+  if (apart < -bound) return -1;
+  return crossing_y_sign(lo, hi, z, y);
 }
 
 /// Sign of (P.x - x) for the crossing P of edge lo -> hi with plane z.

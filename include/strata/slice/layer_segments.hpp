@@ -51,7 +51,9 @@ inline std::optional<FacetCrossing> facet_crossing(const IndexedMesh& mesh, Face
 /// on the facet edge that goes down through the plane and ends on the edge that goes up, in the
 /// facet's vertex order. Coordinates are the crossing points computed in double from the edge's
 /// end points (within a few ulps of the exact point, not always its correctly rounded value);
-/// they serve output and first guesses only, every decision is taken on the exact point.
+/// they serve output and first guesses, and settle a decision only where they lie beyond a
+/// proven bound of that error from the line in question; every other decision is taken on the
+/// exact point.
 struct LayerSegment {
   FacetIndex facet = 0;
   CrossedEdge start_edge;

@@ -4,7 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
+#include <random>
+
+#include "support/exact_crossing.hpp"
 
 namespace strata::detail {
 namespace {
@@ -51,6 +55,84 @@ TEST(CrossingYSign, ACrossingAHairAboveIsAboveWhereDoublesSayTie) {
   ASSERT_EQ(-y * 3.0 + 1.0, 0.0);
   EXPECT_EQ(sign_and_fallback([&] { return crossing_y_sign(lo, hi, 1, y); }),
             std::make_pair(1, true));
+}
+
+/// Random edges crossing a random plane, their coordinates of magnitude around `scale`.
+struct RandomCrossing {
+  Vec3 lo, hi;
+  double z;
+};
+RandomCrossing random_crossing(std::mt19937_64& rng, double scale) {
+  std::uniform_real_distribution<double> coordinate(-scale, scale);
+  std::uniform_real_distribution<double> fraction(0.0, 1.0);
+  RandomCrossing c;
+  do {
+    c.lo = {coordinate(rng), coordinate(rng), coordinate(rng)};
+    c.hi = {coordinate(rng), coordinate(rng), coordinate(rng)};
+    if (c.lo.z > c.hi.z) std::swap(c.lo, c.hi);
+    c.z = c.lo.z + fraction(rng) * (c.hi.z - c.lo.z);
+  } while (!(c.lo.z < c.z && c.z <= c.hi.z));
+  return c;
+}
+
+constexpr double kScales[] = {1e-310, 1e-300, 1e-3, 1.0, 250.0, 1e6, 1e300};
+
+TEST(CrossingPointError, BoundsTheRoundedPointWithRoomToSpare) {
+  // The bound claims a factor of two over the worst rounding; hold it to half of itself.
+  std::mt19937_64 rng(20261129);
+  for (const double scale : kScales) {
+    for (int n = 0; n < 4000; ++n) {
+      const RandomCrossing c = random_crossing(rng, scale);
+      const Point2 p = crossing_point(c.lo, c.hi, c.z);
+      for (const int axis : {0, 1}) {
+        const double rounded = axis == 0 ? p.x : p.y;
+        const double bound =
+            axis == 0 ? crossing_point_error(c.lo.x, c.hi.x) : crossing_point_error(c.lo.y, c.hi.y);
+        const mpq_class error = abs(test::crossing_as_written(c.lo, c.hi, c.z, axis) - rounded);
+        ASSERT_LE(error, mpq_class(bound) / 2) << "scale " << scale << " axis " << axis;
+      }
+    }
+  }
+}
+
+TEST(CrossingYSign, FromTheRoundedPointAgreesWithTheExactSignUlpsAround) {
+  // Scanlines a few ulps from the rounded crossing, where the rounding may put it on the wrong
+  // side: the rounded point decides only beyond its bound, the exact sign otherwise.
+  std::mt19937_64 rng(7);
+  std::uint64_t near_ties_seen = 0;
+  for (const double scale : kScales) {
+    for (int n = 0; n < 250; ++n) {
+      const RandomCrossing c = random_crossing(rng, scale);
+      const double approx = crossing_point(c.lo, c.hi, c.z).y;
+      const mpq_class exact = test::crossing_as_written(c.lo, c.hi, c.z, 1);
+      double y = approx;
+      for (int k = 0; k < 24; ++k) y = std::nextafter(y, -INFINITY);
+      for (int k = -24; k <= 24; ++k, y = std::nextafter(y, INFINITY)) {
+        const int expected = sgn(exact - y);
+        ASSERT_EQ(crossing_y_sign(c.lo, c.hi, c.z, y, approx), expected)
+            << "scale " << scale << " ulps " << k;
+        if (expected != (approx > y) - (approx < y)) ++near_ties_seen;
+      }
+    }
+  }
+  // The rounded point was on the wrong side of some scanline (or on it while the crossing was
+  // not): the cases the bound is there for.
+  EXPECT_GT(near_ties_seen, 1000U);
+}
+
+TEST(CrossingYSign, FromTheRoundedPointFarScanlinesNeedNoExactArithmetic) {
+  const Vec3 lo{0, 0, 0}, hi{0, 1, 3};  // crosses z = 1 at y = 1/3
+  const double approx = crossing_point(lo, hi, 1).y;
+  EXPECT_EQ(sign_and_fallback([&] { return crossing_y_sign(lo, hi, 1, 0.3, approx); }),
+            std::make_pair(1, false));
+  EXPECT_EQ(sign_and_fallback([&] { return crossing_y_sign(lo, hi, 1, 0.4, approx); }),
+            std::make_pair(-1, false));
+  // On the rounded point itself, the exact sign: 1/3 lies above its double.
+  EXPECT_EQ(sign_and_fallback([&] { return crossing_y_sign(lo, hi, 1, 1.0 / 3.0, approx); }),
+            std::make_pair(1, true));
+  // A tie stays a tie.
+  const Vec3 tie_lo{0, 0, 0}, tie_hi{0, 3, 3};
+  EXPECT_EQ(crossing_y_sign(tie_lo, tie_hi, 1, 1.0, crossing_point(tie_lo, tie_hi, 1).y), 0);
 }
 
 TEST(CrossingXSign, MirrorsTheYPredicate) {
