@@ -140,6 +140,9 @@ class LoopChecker {
 
   void build_pieces() {
     chain_first_.assign(chains_.size() + 1, 0);
+    std::size_t segments = 0;
+    for (const SegmentChain& c : chains_) segments += c.segments.size();
+    pieces_.reserve(segments);  // grown a piece at a time, it was copied a dozen times a layer
     for (std::uint32_t c = 0; c < chains_.size(); ++c) {
       chain_first_[c] = static_cast<std::uint32_t>(pieces_.size());
       std::uint32_t position = 0;
