@@ -216,8 +216,14 @@ class LoopChecker {
       const Piece& p = pieces_[k];
       spans[k] = {column(p.x_min), column(p.x_max), row(p.y_min), row(p.y_max)};
     }
+    // Most pieces are shorter than a bucket and lie in one: those skip the loops over buckets.
+    const auto single = [](const Span& s) { return s.i0 == s.i1 && s.j0 == s.j1; };
     std::vector<std::uint32_t> offsets(static_cast<std::size_t>(nx * ny) + 1, 0);
     for (const Span& s : spans) {
+      if (single(s)) {
+        ++offsets[s.j0 * nx + s.i0 + 1];
+        continue;
+      }
       for (std::int64_t j = s.j0; j <= s.j1; ++j) {
         for (std::int64_t i = s.i0; i <= s.i1; ++i) ++offsets[j * nx + i + 1];
       }
@@ -228,6 +234,10 @@ class LoopChecker {
       std::vector<std::uint32_t> cursor(offsets.begin(), offsets.end() - 1);
       for (std::uint32_t k = 0; k < n; ++k) {
         const Span& s = spans[k];
+        if (single(s)) {
+          items[cursor[s.j0 * nx + s.i0]++] = k;
+          continue;
+        }
         for (std::int64_t j = s.j0; j <= s.j1; ++j) {
           for (std::int64_t i = s.i0; i <= s.i1; ++i) items[cursor[j * nx + i]++] = k;
         }
@@ -245,13 +255,14 @@ class LoopChecker {
         for (auto v = u + 1; v != last && pieces_[*v].x_min <= p.x_max; ++v) {
           const Piece& q = pieces_[*v];
           if (q.y_min > p.y_max || p.y_min > q.y_max) continue;
+          // Most pairs found are neighbours in a chain: that test first, it is the cheaper.
+          if (consecutive(p, q)) continue;
           // A pair is looked at in one bucket only: the one holding the lower left corner of
           // their boxes' overlap (row and column grow with y and x, so the larger of the two
           // pieces' first rows and columns).
           const Span& sp = spans[*u];
           const Span& sq = spans[*v];
           if (std::max(sp.j0, sq.j0) * nx + std::max(sp.i0, sq.i0) != b) continue;
-          if (consecutive(p, q)) continue;
           if (pieces_meet(p, q)) return true;
         }
       }
