@@ -105,8 +105,14 @@ class CliWriter final : public detail::SingleFileSink {
       fmt::format_to(std::back_inserter(s), "$$POLYLINE/{},{},{}", kPartId, dir, n);
       for (std::size_t p = 0; p < n; ++p) {
         const Point2& pt = loop.points[p % loop.points.size()];
-        s += ',';
-        detail::append_number_pair(s, pt.x, ',', pt.y);
+        // ",x,y" laid out on the stack and appended at once.
+        char text[2 * detail::kShortestNumberChars + 2];
+        char* end = text;
+        *end++ = ',';
+        end = detail::write_shortest(end, pt.x);
+        *end++ = ',';
+        end = detail::write_shortest(end, pt.y);
+        s.append(text, end);
         flush_if_large(out, s);
       }
       s += '\n';
@@ -116,14 +122,18 @@ class CliWriter final : public detail::SingleFileSink {
       detail::RepeatedNumber row_y;
       for (const HatchSegment& h : layer.hatches) {
         const double y = run().grid.yc(h.row) + run().options.scan_offset_mm;
-        s += ',';
-        detail::append_number(s, h.x_start);
-        s += ',';
-        row_y.append_to(s, y);
-        s += ',';
-        detail::append_number(s, h.x_end);
-        s += ',';
-        row_y.append_to(s, y);
+        // ",x_start,y,x_end,y" laid out on the stack and appended at once.
+        char text[4 * detail::kShortestNumberChars + 4];
+        char* end = text;
+        *end++ = ',';
+        end = detail::write_shortest(end, h.x_start);
+        *end++ = ',';
+        end = row_y.write(end, y);
+        *end++ = ',';
+        end = detail::write_shortest(end, h.x_end);
+        *end++ = ',';
+        end = row_y.write(end, y);
+        s.append(text, end);
         flush_if_large(out, s);
       }
       s += '\n';

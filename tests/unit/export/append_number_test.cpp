@@ -130,5 +130,31 @@ TEST(RepeatedNumber, WritesWhatAppendNumberWritesWhetherTheNumberRepeatsOrChange
   EXPECT_EQ(written, "-41.15,-41.15,-41.15,-41.05,0,-0,-0,0,nan,nan,1e-05,1e-05,-41.15,");
 }
 
+TEST(RepeatedNumber, WritesInPlaceWhatItAppendsTheLongestTextIncluded) {
+  // Into a buffer as write_shortest writes: room for the longest text and as much again after
+  // each number, the characters past its end not part of the text.
+  const std::vector<double> values = {-2.2250738585072014e-308,
+                                      -2.2250738585072014e-308,
+                                      -41.15,
+                                      -41.15,
+                                      0.1 + 0.2,
+                                      -0.0,
+                                      1e300,
+                                      1e300};
+  RepeatedNumber in_place;
+  RepeatedNumber appended;
+  std::vector<char> buffer(values.size() * kShortestNumberChars + kShortestNumberChars, 'x');
+  char* end = buffer.data();
+  std::string expected;
+  for (const double v : values) {
+    end = in_place.write(end, v);
+    *end++ = ',';
+    appended.append_to(expected, v);
+    expected += ',';
+  }
+  EXPECT_EQ(std::string(buffer.data(), end), expected);
+  EXPECT_EQ(expected.substr(0, 26), "-2.2250738585072014e-308,-");
+}
+
 }  // namespace
 }  // namespace strata::io::detail
