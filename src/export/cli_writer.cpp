@@ -105,14 +105,7 @@ class CliWriter final : public detail::SingleFileSink {
       fmt::format_to(std::back_inserter(s), "$$POLYLINE/{},{},{}", kPartId, dir, n);
       for (std::size_t p = 0; p < n; ++p) {
         const Point2& pt = loop.points[p % loop.points.size()];
-        // ",x,y" laid out on the stack and appended at once.
-        char text[2 * detail::kShortestNumberChars + 2];
-        char* end = text;
-        *end++ = ',';
-        end = detail::write_shortest(end, pt.x);
-        *end++ = ',';
-        end = detail::write_shortest(end, pt.y);
-        s.append(text, end);
+        detail::append_text(s, ',', pt.x, ',', pt.y);
         flush_if_large(out, s);
       }
       s += '\n';
@@ -122,18 +115,8 @@ class CliWriter final : public detail::SingleFileSink {
       detail::RepeatedNumber row_y;
       for (const HatchSegment& h : layer.hatches) {
         const double y = run().grid.yc(h.row) + run().options.scan_offset_mm;
-        // ",x_start,y,x_end,y" laid out on the stack and appended at once.
-        char text[4 * detail::kShortestNumberChars + 4];
-        char* end = text;
-        *end++ = ',';
-        end = detail::write_shortest(end, h.x_start);
-        *end++ = ',';
-        end = row_y.write(end, y);
-        *end++ = ',';
-        end = detail::write_shortest(end, h.x_end);
-        *end++ = ',';
-        end = row_y.write(end, y);
-        s.append(text, end);
+        detail::append_text(s, ',', h.x_start, ',', detail::RepeatedValue{row_y, y}, ',', h.x_end,
+                            ',', detail::RepeatedValue{row_y, y});
         flush_if_large(out, s);
       }
       s += '\n';

@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "export/shortest_number_internal.hpp"
@@ -188,16 +189,6 @@ inline void append_number(std::string& out, double v) {
   out.append(digits, write_shortest(digits, v));
 }
 
-/// Appends `a`, the character `between` and `b` (a point's coordinates), each number as
-/// append_number writes it, in one append rather than three.
-inline void append_number_pair(std::string& out, double a, char between, double b) {
-  char text[2 * kShortestNumberChars + 1];
-  char* end = write_shortest(text, a);
-  *end++ = between;
-  end = write_shortest(end, b);
-  out.append(text, end);
-}
-
 /// A number written many times in a row (a scanline's y, once or twice for each of its row's
 /// hatches), formatted once for as long as it stays the same: the same text as append_number.
 class RepeatedNumber {
@@ -229,5 +220,41 @@ class RepeatedNumber {
   std::size_t length_ = 0;
   std::uint64_t bits_ = 0;
 };
+
+/// A RepeatedNumber's value, as a part of append_text.
+struct RepeatedValue {
+  RepeatedNumber& number;
+  double value;
+};
+
+inline char* put_text_part(char* end, char c) {
+  *end = c;
+  return end + 1;
+}
+inline char* put_text_part(char* end, double v) { return write_shortest(end, v); }
+inline char* put_text_part(char* end, const RepeatedValue& r) {
+  return r.number.write(end, r.value);
+}
+
+/// The room a part takes: a character one, a number kShortestNumberChars (it writes at most half
+/// of that and needs all of it).
+template <class Part>
+constexpr std::size_t text_part_room() {
+  static_assert(std::is_same_v<Part, char> || std::is_same_v<Part, double> ||
+                    std::is_same_v<Part, RepeatedValue>,
+                "a part is a character, a double or a RepeatedValue");
+  return std::is_same_v<Part, char> ? 1 : kShortestNumberChars;
+}
+
+/// Appends the parts, characters and numbers (written as append_number writes them), laid out
+/// on the stack first and appended at once: a CLI point or hatch, a step of an SVG path. One
+/// append rather than one a part, which was most of the cost of writing them but the numbers.
+template <class... Parts>
+void append_text(std::string& out, const Parts&... parts) {
+  char text[(text_part_room<Parts>() + ...)];
+  char* end = text;
+  ((end = put_text_part(end, parts)), ...);
+  out.append(text, end);
+}
 
 }  // namespace strata::io::detail

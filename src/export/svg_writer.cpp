@@ -56,11 +56,6 @@ std::string xml_escape(std::string_view text) {
   return out;
 }
 
-/// Appends "x y" of a layer point in SVG coordinates (y flipped so that +y is up).
-void append_point(std::string& out, double x, double y) {
-  detail::append_number_pair(out, x, ' ', -y);
-}
-
 class SvgWriter final : public detail::LayerFilesSink {
  public:
   SvgWriter(const std::filesystem::path& dir, std::string stem)
@@ -109,8 +104,13 @@ class SvgWriter final : public detail::LayerFilesSink {
       s.clear();
       s += fmt::format("<path class=\"{}\" d=\"M", cls);
       for (std::size_t p = 0; p < loop.points.size(); ++p) {
-        s += p == 0 ? " " : " L ";
-        append_point(s, loop.points[p].x, loop.points[p].y);
+        // " x y" then " L x y", y flipped so that +y is up in the picture.
+        const Point2& point = loop.points[p];
+        if (p == 0) {
+          detail::append_text(s, ' ', point.x, ' ', -point.y);
+        } else {
+          detail::append_text(s, ' ', 'L', ' ', point.x, ' ', -point.y);
+        }
       }
       s += closed ? " Z\"/>\n" : "\"/>\n";
       if (!closed) {
@@ -129,13 +129,11 @@ class SvgWriter final : public detail::LayerFilesSink {
       detail::RepeatedNumber row_y;
       for (const HatchSegment& h : layer.hatches) {
         const double y = g.yc(h.row) + run().options.scan_offset_mm;
-        s += first ? "M " : " M ";
+        // "M x y H x", and a space before each but the first.
+        if (!first) s += ' ';
         first = false;
-        detail::append_number(s, h.x_start);
-        s += ' ';
-        row_y.append_to(s, -y);
-        s += " H ";
-        detail::append_number(s, h.x_end);
+        detail::append_text(s, 'M', ' ', h.x_start, ' ', detail::RepeatedValue{row_y, -y}, ' ', 'H',
+                            ' ', h.x_end);
         if (s.size() > (std::size_t{1} << 16)) {
           out.write(s);
           s.clear();

@@ -84,9 +84,9 @@ TEST(AppendNumber, WritesWhatFmtWritesAroundEveryPowerOfTenAndItsLayouts) {
   }
 }
 
-TEST(AppendNumberPair, WritesBothNumbersAsAppendNumberDoesWithTheCharacterBetween) {
+TEST(AppendText, WritesItsNumbersAsAppendNumberDoesAndItsCharactersBetween) {
   // The longest texts first (their digits are copied in fixed-size pieces past their ends, which
-  // must stay in the buffers), then random pairs of every magnitude.
+  // must stay in the text's room), then random pairs of every magnitude; a repeated number too.
   const std::vector<double> longest = {-2.2250738585072014e-308, -1.2345678901234567e-100,
                                        -0.00012345678901234567,  -1234567890123456.8,
                                        -9007199254740991.0,      5e-324};
@@ -98,16 +98,18 @@ TEST(AppendNumberPair, WritesBothNumbersAsAppendNumberDoesWithTheCharacterBetwee
   for (int i = 0; i < 20000; ++i) {
     pairs.emplace_back(std::bit_cast<double>(random()), std::bit_cast<double>(random()));
   }
+  RepeatedNumber repeated;
   for (const auto& [a, b] : pairs) {
-    for (const char between : {',', ' '}) {
-      std::string out = "x";  // appends, never replaces
-      append_number_pair(out, a, between, b);
-      std::string expected = "x";
-      append_number(expected, a);
-      expected += between;
-      append_number(expected, b);
-      ASSERT_EQ(out, expected) << a << " " << b;
-    }
+    std::string out = "x";  // appends, never replaces
+    append_text(out, a, ' ', b, ',', RepeatedValue{repeated, a}, ';');
+    std::string expected = "x";
+    append_number(expected, a);
+    expected += ' ';
+    append_number(expected, b);
+    expected += ',';
+    append_number(expected, a);
+    expected += ';';
+    ASSERT_EQ(out, expected) << a << " " << b;
   }
 }
 
