@@ -115,6 +115,8 @@ LayerSegments slice_layer(const IndexedMesh& mesh, std::span<const FacetIndex> c
   const auto point_on = [&](const CrossedEdge& edge) {
     return detail::crossing_point(mesh.vertices[edge.below], mesh.vertices[edge.above], z);
   };
+  // The candidates are the facets whose span of layers holds this one: nearly each gives a piece.
+  out.segments.reserve(candidates.size());
   for (const FacetIndex f : candidates) {
     if (const std::optional<FacetCrossing> c = facet_crossing(mesh, f, z)) {
       out.segments.push_back(LayerSegment{f, c->start_edge, c->end_edge, point_on(c->start_edge),
