@@ -47,7 +47,7 @@ class SegmentEdgeIndex {
   }
 
   /// The first segment with this key that `used` does not mark, or -1.
-  std::int64_t take(std::uint64_t key, const std::vector<bool>& used) const {
+  std::int64_t take(std::uint64_t key, const std::vector<std::uint8_t>& used) const {
     for (std::uint32_t s = slots_[probe(key)].first; s != kNone; s = next_[s]) {
       if (!used[s]) return s;
     }
@@ -88,11 +88,11 @@ std::vector<SegmentChain> chain_segments(const std::vector<Segment>& segments) {
   // Only an open chain walks backwards: the index by end edge is built on the first (most
   // layers have none).
   std::optional<SegmentEdgeIndex> by_end;
-  std::vector<bool> used(segments.size(), false);
+  std::vector<std::uint8_t> used(segments.size(), 0);  // bytes: read on every step, no bit masks
   std::vector<SegmentChain> chains;
   for (std::uint32_t seed = 0; seed < segments.size(); ++seed) {
     if (used[seed]) continue;
-    used[seed] = true;
+    used[seed] = 1;
     SegmentChain chain;
     chain.segments.push_back(seed);
     const std::uint64_t start_key = crossed_edge_key(segments[seed].start_edge);
@@ -105,7 +105,7 @@ std::vector<SegmentChain> chain_segments(const std::vector<Segment>& segments) {
       }
       const std::int64_t next = by_start.take(key, used);
       if (next < 0) break;
-      used[next] = true;
+      used[next] = 1;
       chain.segments.push_back(static_cast<std::uint32_t>(next));
     }
     if (!chain.closed) {
@@ -116,7 +116,7 @@ std::vector<SegmentChain> chain_segments(const std::vector<Segment>& segments) {
       while (true) {
         const std::int64_t previous = by_end->take(key, used);
         if (previous < 0) break;
-        used[previous] = true;
+        used[previous] = 1;
         head.push_back(static_cast<std::uint32_t>(previous));
         key = crossed_edge_key(segments[previous].start_edge);
       }
