@@ -40,8 +40,9 @@ inline double crossing_point_error(double a, double b) {
 
 /// crossing_y_sign(lo, hi, z, y), given approx_y = crossing_point(lo, hi, z).y: decided by
 /// approx_y alone when it lies farther from y than its error bound (nearly always on a grid of
-/// cells much wider than an ulp), by the exact predicate otherwise. A non-finite approx_y or
-/// bound compares false and goes to the predicate.
+/// cells much wider than an ulp), by the exact predicate otherwise. approx_y overflows only where
+/// |lo.y| + |hi.y| does, and the bound is then infinite; a NaN compares false: both go to the
+/// predicate.
 inline int crossing_y_sign(const Vec3& lo, const Vec3& hi, double z, double y, double approx_y) {
   const double apart = approx_y - y;  // its sign is that of approx_y - y, exactly
   const double bound = crossing_point_error(lo.y, hi.y);

@@ -135,6 +135,16 @@ TEST(CrossingYSign, FromTheRoundedPointFarScanlinesNeedNoExactArithmetic) {
   EXPECT_EQ(crossing_y_sign(tie_lo, tie_hi, 1, 1.0, crossing_point(tie_lo, tie_hi, 1).y), 0);
 }
 
+TEST(CrossingYSign, FromAnOverflowingRoundedPointTheExactPredicateDecides) {
+  // hi.y - lo.y overflows: the rounded point is +inf, the crossing 0.35e308 at z = 0.5. The
+  // bound overflows with it, so the rounded point decides nothing.
+  const Vec3 lo{0, -1e308, 0}, hi{0, 1.7e308, 1};
+  const double approx = crossing_point(lo, hi, 0.5).y;
+  ASSERT_EQ(approx, INFINITY);
+  EXPECT_EQ(crossing_y_sign(lo, hi, 0.5, 1e308, approx), -1);
+  EXPECT_EQ(crossing_y_sign(lo, hi, 0.5, 0.0, approx), 1);
+}
+
 TEST(CrossingXSign, MirrorsTheYPredicate) {
   const Vec3 lo{0, 0, 0}, hi{1, 0, 3};
   EXPECT_EQ(crossing_x_sign(lo, hi, 1, 1.0 / 3.0), 1);
