@@ -193,29 +193,20 @@ inline void append_number(std::string& out, double v) {
 /// hatches), formatted once for as long as it stays the same: the same text as append_number.
 class RepeatedNumber {
  public:
-  void append_to(std::string& out, double v) {
-    remember(v);
-    out.append(digits_, length_);
-  }
-
   /// Writes the text at `out` as write_shortest does (with as much room after it); returns the
   /// end. A copy of constant length, which the compiler makes a few moves: the text is shorter.
   char* write(char* out, double v) {
-    remember(v);
+    const auto bits = std::bit_cast<std::uint64_t>(v);
+    if (length_ == 0 || bits != bits_) {
+      bits_ = bits;
+      length_ = static_cast<std::size_t>(write_shortest(digits_, v) - digits_);
+    }
     static_assert(kShortestNumberChars / 2 >= 24);
     std::memcpy(out, digits_, kShortestNumberChars / 2);
     return out + length_;
   }
 
  private:
-  void remember(double v) {
-    const auto bits = std::bit_cast<std::uint64_t>(v);
-    if (length_ == 0 || bits != bits_) {
-      bits_ = bits;
-      length_ = static_cast<std::size_t>(write_shortest(digits_, v) - digits_);
-    }
-  }
-
   char digits_[kShortestNumberChars];
   std::size_t length_ = 0;
   std::uint64_t bits_ = 0;

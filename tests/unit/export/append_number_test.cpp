@@ -123,8 +123,7 @@ TEST(RepeatedNumber, WritesWhatAppendNumberWritesWhetherTheNumberRepeatsOrChange
   std::string written;
   std::string expected;
   for (const double v : values) {
-    repeated.append_to(written, v);
-    written += ',';
+    append_text(written, RepeatedValue{repeated, v}, ',');
     append_number(expected, v);
     expected += ',';
   }
@@ -132,7 +131,7 @@ TEST(RepeatedNumber, WritesWhatAppendNumberWritesWhetherTheNumberRepeatsOrChange
   EXPECT_EQ(written, "-41.15,-41.15,-41.15,-41.05,0,-0,-0,0,nan,nan,1e-05,1e-05,-41.15,");
 }
 
-TEST(RepeatedNumber, WritesInPlaceWhatItAppendsTheLongestTextIncluded) {
+TEST(RepeatedNumber, WritesInPlaceWhatAppendNumberWritesTheLongestTextIncluded) {
   // Into a buffer as write_shortest writes: room for the longest text and as much again after
   // each number, the characters past its end not part of the text.
   const std::vector<double> values = {-2.2250738585072014e-308,
@@ -144,14 +143,13 @@ TEST(RepeatedNumber, WritesInPlaceWhatItAppendsTheLongestTextIncluded) {
                                       1e300,
                                       1e300};
   RepeatedNumber in_place;
-  RepeatedNumber appended;
   std::vector<char> buffer(values.size() * kShortestNumberChars + kShortestNumberChars, 'x');
   char* end = buffer.data();
   std::string expected;
   for (const double v : values) {
     end = in_place.write(end, v);
     *end++ = ',';
-    appended.append_to(expected, v);
+    append_number(expected, v);
     expected += ',';
   }
   EXPECT_EQ(std::string(buffer.data(), end), expected);
