@@ -212,21 +212,42 @@ BoundaryShell::Slab BoundaryShell::slab_of(std::span<const std::array<VertexInde
   const double length = std::sqrt(sum.x * sum.x + sum.y * sum.y + sum.z * sum.z);
   if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(scale)) return out;
   out.n = {sum.x / length, sum.y / length, sum.z / length};
-  out.lo = std::numeric_limits<double>::infinity();
-  out.hi = -std::numeric_limits<double>::infinity();
+  // The tangents: u across n and the axis least along it, v across n and u.
+  const Vec3& n = out.n;
+  const double ax = std::fabs(n.x), ay = std::fabs(n.y), az = std::fabs(n.z);
+  const Vec3 axis =
+      ax <= ay && ax <= az ? Vec3{1, 0, 0} : (ay <= az ? Vec3{0, 1, 0} : Vec3{0, 0, 1});
+  const Vec3 u{n.y * axis.z - n.z * axis.y, n.z * axis.x - n.x * axis.z,
+               n.x * axis.y - n.y * axis.x};
+  const double u_length = std::sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
+  out.u = {u.x / u_length, u.y / u_length, u.z / u_length};
+  out.v = {n.y * out.u.z - n.z * out.u.y, n.z * out.u.x - n.x * out.u.z,
+           n.x * out.u.y - n.y * out.u.x};
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  out.lo = out.u_lo = out.v_lo = kInf;
+  out.hi = out.u_hi = out.v_hi = -kInf;
+  const auto widen = [](const Vec3& d, const Vec3& p, double& lo, double& hi) {
+    const double s = d.x * p.x + d.y * p.y + d.z * p.z;
+    lo = std::min(lo, s);
+    hi = std::max(hi, s);
+  };
   for (const auto& tri : triangles) {
     for (const VertexIndex corner : tri) {
       const Vec3& p = vertices[corner];
-      const double s = out.n.x * p.x + out.n.y * p.y + out.n.z * p.z;
-      out.lo = std::min(out.lo, s);
-      out.hi = std::max(out.hi, s);
+      widen(out.n, p, out.lo, out.hi);
+      widen(out.u, p, out.u_lo, out.u_hi);
+      widen(out.v, p, out.v_lo, out.v_hi);
     }
   }
-  // The computed n is unit to a few ulps, and each dot product is off by a few ulps of the
-  // coordinates' scale: 1e-9 of it covers both with room to spare.
+  // The computed n, u and v are unit and orthogonal to a few ulps, and each dot product is off
+  // by a few ulps of the coordinates' scale: 1e-9 of it covers both with room to spare.
   const double margin = 1e-9 * (scale + 1.0);
   out.lo -= margin;
   out.hi += margin;
+  out.u_lo -= margin;
+  out.u_hi += margin;
+  out.v_lo -= margin;
+  out.v_hi += margin;
   out.usable = true;
   return out;
 }
@@ -613,6 +634,7 @@ void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::i
   if (slab.usable) {
     const double lo = slab.lo - t;
     const double hi = slab.hi + t;
+    const double t2_far = t * t * (1.0 + 1e-9);
     const GridAxis x_axis(grid_.x0, grid_.dx, grid_.nx);
     for (std::int64_t r = 0; r < rows; ++r) {
       if (interior[r] == 0) continue;
@@ -641,6 +663,29 @@ void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::i
         keep = run_bits(i0, i1, pi0);
       }
       interior[r] &= keep;
+      // The box of the frame: a cell beside the patch, within the slab but past its facets'
+      // extent along the tangents (near a neighbour's facets), is dropped here. Its squared
+      // distance to the box, each term from below, against t^2 widened by far more than the
+      // frame's departure from orthonormal and the rounding of these sums.
+      std::uint64_t left = interior[r];
+      if (left == 0) continue;
+      const double rest_u = slab.u.y * yc + slab.u.z * z;
+      const double rest_v = slab.v.y * yc + slab.v.z * z;
+      while (left != 0) {
+        const int bit = std::countr_zero(left);
+        left &= left - 1;
+        const double x = grid_.xc(static_cast<std::uint32_t>(pi0 + bit));
+        const double abs_error = rest_error + 1e-9 * std::fabs(x);
+        const auto outside = [&](double s, double s_lo, double s_hi) {
+          return std::max({s_lo - s - abs_error, 0.0, s - s_hi - abs_error});
+        };
+        const double dn = outside(slab.n.x * x + rest, slab.lo, slab.hi);
+        const double du = outside(slab.u.x * x + rest_u, slab.u_lo, slab.u_hi);
+        const double dv = outside(slab.v.x * x + rest_v, slab.v_lo, slab.v_hi);
+        if ((dn * dn + du * du + dv * dv) * (1.0 - 1e-9) >= t2_far) {
+          interior[r] &= ~(std::uint64_t{1} << bit);
+        }
+      }
     }
   }
   // The kept rows that still hold an interior cell: a facet visits only those (the vertices
