@@ -140,13 +140,17 @@ std::vector<RowCrossing> collect_crossings(const IndexedMesh& mesh, const LayerS
       const double yr = row_y(j);
       double x = below.x;
       if (dy_seg != 0.0) x = below.x + (yr - below.y) * (above.x - below.x) / dy_seg;
-      // Cell i is left of the crossing when its centre is.
-      const auto centre_left = [&](std::uint32_t i) {
-        return detail::scanline_crossing_x_sign(b_lo, b_hi, a_lo, a_hi, z, yr, grid.xc(i)) > 0;
-      };
-      const std::uint32_t cells_left =
-          want_cells ? detail::count_prefix((x - grid.x0) / grid.dx + 0.5, grid.nx, centre_left)
-                     : 0;
+      std::uint32_t cells_left = 0;
+      if (want_cells) {
+        // Cell i is left of the crossing when its centre is; the segment's rounded end points
+        // settle most centres.
+        const detail::RoundedScanlineCrossing rounded(b_lo, b_hi, below, a_lo, a_hi, above, yr);
+        const auto centre_left = [&](std::uint32_t i) {
+          return detail::scanline_crossing_x_sign(b_lo, b_hi, a_lo, a_hi, z, yr, grid.xc(i),
+                                                  rounded) > 0;
+        };
+        cells_left = detail::count_prefix((x - grid.x0) / grid.dx + 0.5, grid.nx, centre_left);
+      }
       crossings.push_back({j, cells_left, weight, x});
     }
   }

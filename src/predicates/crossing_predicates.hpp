@@ -90,6 +90,46 @@ inline int scanline_crossing_x_sign(const Vec3& p_lo, const Vec3& p_hi, const Ve
   });
 }
 
+/// Where the scanline y = yr meets segment PQ, from the segment's rounded end points
+/// below = crossing_point(p_lo, p_hi, z) and above = crossing_point(q_lo, q_hi, z): with
+/// Q.y - P.y > 0 (scanline_crossing_x_sign's precondition), X - xc has the sign of
+///   D = (P.x - xc) (Q.y - P.y) + (yr - P.y) (Q.x - P.x),
+/// evaluated here with each rounded coordinate carrying crossing_point_error() as its error, so
+/// that a sign it proves is D's at the exact P and Q. A row's scanline probes several centres:
+/// the parts without xc are taken once.
+class RoundedScanlineCrossing {
+ public:
+  RoundedScanlineCrossing(const Vec3& p_lo, const Vec3& p_hi, Point2 below, const Vec3& q_lo,
+                          const Vec3& q_hi, Point2 above, double yr)
+      : px_(below.x, crossing_point_error(p_lo.x, p_hi.x)) {
+    const ErrorBoundedDouble py(below.y, crossing_point_error(p_lo.y, p_hi.y));
+    const ErrorBoundedDouble qx(above.x, crossing_point_error(q_lo.x, q_hi.x));
+    const ErrorBoundedDouble qy(above.y, crossing_point_error(q_lo.y, q_hi.y));
+    rise_ = qy - py;
+    offset_ = (ErrorBoundedDouble(yr) - py) * (qx - px_);
+  }
+
+  /// The sign of X - xc, or 2 when the rounding leaves it open (an overflow or a NaN included).
+  int x_sign(double xc) const {
+    return certain_sign((px_ - ErrorBoundedDouble(xc)) * rise_ + offset_);
+  }
+
+ private:
+  ErrorBoundedDouble px_;
+  ErrorBoundedDouble rise_;    ///< Q.y - P.y
+  ErrorBoundedDouble offset_;  ///< (yr - P.y) (Q.x - P.x)
+};
+
+/// scanline_crossing_x_sign() decided from the rounded end points when they can, by the exact
+/// predicate otherwise. `rounded` is the same segment's and scanline's.
+inline int scanline_crossing_x_sign(const Vec3& p_lo, const Vec3& p_hi, const Vec3& q_lo,
+                                    const Vec3& q_hi, double z, double yr, double xc,
+                                    const RoundedScanlineCrossing& rounded) {
+  const int sign = rounded.x_sign(xc);
+  if (sign != 2) return sign;
+  return scanline_crossing_x_sign(p_lo, p_hi, q_lo, q_hi, z, yr, xc);
+}
+
 /// Sign of the x component of the facet normal n = (b - a) x (c - a).
 inline int normal_x_sign(const Vec3& a, const Vec3& b, const Vec3& c) {
   return filtered_sign([&](auto tag) {

@@ -189,6 +189,93 @@ TEST(ScanlineCrossingXSign, CentreOnEitherSideOrOnTheCrossing) {
             std::make_pair(0, true));
 }
 
+/// An edge crossing the plane z, its coordinates of magnitude around `scale`.
+RandomCrossing random_crossing_at(std::mt19937_64& rng, double scale, double z) {
+  std::uniform_real_distribution<double> coordinate(-scale, scale);
+  std::uniform_real_distribution<double> fraction(0.0, 1.0);
+  RandomCrossing c;
+  c.z = z;
+  do {
+    c.lo = {coordinate(rng), coordinate(rng), z - fraction(rng) * scale};
+    c.hi = {coordinate(rng), coordinate(rng), z + fraction(rng) * scale};
+  } while (!(c.lo.z < z && z <= c.hi.z));
+  return c;
+}
+
+TEST(ScanlineCrossingXSign, FromTheRoundedPointsAgreesWithTheExactSignUlpsAround) {
+  // Segments PQ between two edges' crossings, a scanline between P and Q, and centres up to a
+  // hundred ulps of the coordinates' scale either side of where it meets PQ: the rounded end
+  // points decide only what their errors leave certain, the exact sign the rest.
+  std::mt19937_64 rng(20261130);
+  std::uint64_t decided_near = 0;
+  std::uint64_t wrong_side_in_doubles = 0;
+  for (const double scale : kScales) {
+    for (int n = 0; n < 250; ++n) {
+      RandomCrossing p = random_crossing(rng, scale);
+      RandomCrossing q = random_crossing_at(rng, scale, p.z);
+      mpq_class py = test::crossing_as_written(p.lo, p.hi, p.z, 1);
+      mpq_class qy = test::crossing_as_written(q.lo, q.hi, q.z, 1);
+      if (py > qy) {
+        std::swap(p, q);
+        std::swap(py, qy);
+      }
+      const double yr = mpq_class((py + qy) / 2).get_d();
+      if (!(py < yr && yr <= qy)) continue;  // P strictly below the scanline, Q on or above
+      const mpq_class px = test::crossing_as_written(p.lo, p.hi, p.z, 0);
+      const mpq_class qx = test::crossing_as_written(q.lo, q.hi, q.z, 0);
+      const mpq_class x = px + (yr - py) * (qx - px) / (qy - py);
+      const Point2 below = crossing_point(p.lo, p.hi, p.z);
+      const Point2 above = crossing_point(q.lo, q.hi, q.z);
+      const RoundedScanlineCrossing rounded(p.lo, p.hi, below, q.lo, q.hi, above, yr);
+      // Where the rows' code would guess the crossing from the rounded points.
+      const double guess = below.x + (yr - below.y) * (above.x - below.x) / (above.y - below.y);
+      // Steps of two ulps of the coordinates' scale, where the rounded points' errors lie.
+      const double step = 2.0 * std::ldexp(1.0, std::ilogb(scale) - 52);
+      for (int k = -48; k <= 48; ++k) {
+        const double xc = x.get_d() + k * step;
+        const int expected = sgn(x - xc);
+        ASSERT_EQ(scanline_crossing_x_sign(p.lo, p.hi, q.lo, q.hi, p.z, yr, xc, rounded), expected)
+            << "scale " << scale << " steps " << k;
+        if (rounded.x_sign(xc) != 2) ++decided_near;
+        if (expected != (guess > xc) - (guess < xc)) ++wrong_side_in_doubles;
+      }
+    }
+  }
+  // The rounded points decided centres a few dozen ulps from the crossing, where the doubles
+  // alone put many others on the wrong side: the cases the errors are carried for. The test
+  // fails with the end points' errors taken as zero, or as 1/128 of crossing_point_error().
+  EXPECT_GT(decided_near, 10000U);
+  EXPECT_GT(wrong_side_in_doubles, 1000U);
+}
+
+TEST(ScanlineCrossingXSign, FromTheRoundedPointsFarCentresNeedNoExactArithmetic) {
+  // P = (0, 0), Q = (2, 2) at z = 1; the line y = 1 meets PQ at x = 1.
+  const Vec3 p_lo{0, 0, 0}, p_hi{0, 0, 2}, q_lo{2, 2, 0}, q_hi{2, 2, 2};
+  const RoundedScanlineCrossing rounded(p_lo, p_hi, crossing_point(p_lo, p_hi, 1), q_lo, q_hi,
+                                        crossing_point(q_lo, q_hi, 1), 1);
+  const auto sign_at = [&](double xc) {
+    return sign_and_fallback(
+        [&] { return scanline_crossing_x_sign(p_lo, p_hi, q_lo, q_hi, 1, 1, xc, rounded); });
+  };
+  EXPECT_EQ(sign_at(0.5), std::make_pair(1, false));
+  EXPECT_EQ(sign_at(1.5), std::make_pair(-1, false));
+  // On the crossing: the rounding could hide either side, so the exact predicate says tie.
+  EXPECT_EQ(sign_at(1.0), std::make_pair(0, true));
+}
+
+TEST(ScanlineCrossingXSign, FromAnOverflowingRoundedPointTheExactPredicateDecides) {
+  // P's edge: hi.x - lo.x overflows, so P rounds to x = +inf (P = (0.35e308, 0) at z = 0.5); Q =
+  // (0, 2). The scanline y = 1 meets PQ at x = 0.175e308.
+  const Vec3 p_lo{-1e308, 0, 0}, p_hi{1.7e308, 0, 1}, q_lo{0, 2, 0}, q_hi{0, 2, 1};
+  const Point2 below = crossing_point(p_lo, p_hi, 0.5);
+  ASSERT_EQ(below.x, INFINITY);
+  const RoundedScanlineCrossing rounded(p_lo, p_hi, below, q_lo, q_hi,
+                                        crossing_point(q_lo, q_hi, 0.5), 1);
+  EXPECT_EQ(rounded.x_sign(1e307), 2);
+  EXPECT_EQ(scanline_crossing_x_sign(p_lo, p_hi, q_lo, q_hi, 0.5, 1, 1e307, rounded), 1);
+  EXPECT_EQ(scanline_crossing_x_sign(p_lo, p_hi, q_lo, q_hi, 0.5, 1, 1e308, rounded), -1);
+}
+
 TEST(NormalXSign, SignOfTheNormalsXComponent) {
   // (b - a) x (c - a) for a facet in the plane x = 0 is along x.
   EXPECT_EQ(normal_x_sign({0, 0, 0}, {0, 1, 0}, {0, 0, 1}), 1);
