@@ -12,6 +12,7 @@
 #include "contour/chain_segments.hpp"
 #include "contour/loop_check.hpp"
 #include "contour/point_in_polygon_internal.hpp"
+#include "predicates/crossing_predicates.hpp"
 
 namespace strata {
 
@@ -113,10 +114,10 @@ class CrossingPointGeometry {
         }
       }
     }
-    // crossing_point() computes lo.x + t (hi.x - lo.x) with t = (z - lo.z) / (hi.z - lo.z):
-    // five roundings of relative size 2^-53 on terms bounded by 2 * largest, about 11 * 2^-53 *
-    // largest in all; 2^-48 leaves a factor of three. The second term covers underflow.
-    margin_ = largest * 0x1p-48 + 0x1p-1000;
+    // Each coordinate of a crossing point is within crossing_point_error(a, b) of the exact one,
+    // a and b its edge's, so within crossing_point_error(largest, largest); written as twice the
+    // bound for (largest, 0), which is no smaller and stays finite up to the largest double.
+    margin_ = 2.0 * detail::crossing_point_error(largest, 0.0);
   }
 
   Point2 approx(detail::SegmentEnd p) const {
