@@ -178,6 +178,51 @@ void first_ring(const std::uint8_t* here, const std::uint8_t* below, const std::
   }
 }
 
+/// A box in the frame of a patch's slab (n, u, v), [lo[a], hi[a]] along each axis a: the slab's
+/// own box holds all the patch's facets, a facet's box (facet_frame_box) that facet alone.
+struct FrameBox {
+  double lo[3], hi[3];
+};
+
+/// The coordinates of p along the frame's axes.
+std::array<double, 3> frame_coordinates(const Vec3 (&axes)[3], const Vec3& p) {
+  std::array<double, 3> out;
+  for (int a = 0; a < 3; ++a) out[a] = axes[a].x * p.x + axes[a].y * p.y + axes[a].z * p.z;
+  return out;
+}
+
+/// The box of a facet's corners in the frame, widened by 1e-9 of their scale: far above the
+/// rounding of the dot products and the frame's departure from orthonormal.
+FrameBox facet_frame_box(const Vec3 (&axes)[3], const Vec3* const* corner) {
+  double scale = 1.0;
+  std::array<double, 3> q[3];
+  for (int c = 0; c < 3; ++c) {
+    const Vec3& p = *corner[c];
+    scale = std::max({scale, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+    q[c] = frame_coordinates(axes, p);
+  }
+  FrameBox box{};
+  for (int a = 0; a < 3; ++a) {
+    box.lo[a] = std::min({q[0][a], q[1][a], q[2][a]}) - 1e-9 * scale;
+    box.hi[a] = std::max({q[0][a], q[1][a], q[2][a]}) + 1e-9 * scale;
+  }
+  return box;
+}
+
+/// Whether p is certainly at least t from the box (t2_far being t^2 widened by 1e-9): then it is
+/// at least t from every facet inside it. Each term of the squared distance is taken from below,
+/// by 1e-9 of p's scale, far more than the rounding of the dot products.
+bool beyond_frame_box(const Vec3 (&axes)[3], const FrameBox& box, const Vec3& p, double t2_far) {
+  const std::array<double, 3> q = frame_coordinates(axes, p);
+  const double error = 1e-9 * (std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z) + 1.0);
+  double sum = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    const double d = std::max({box.lo[a] - q[a] - error, 0.0, q[a] - box.hi[a] - error});
+    sum += d * d;
+  }
+  return sum * (1.0 - 1e-9) >= t2_far;
+}
+
 /// Whether p is closer than t to the facet with these corners. Its filter is built on the
 /// first call: the boxes of many facets hold no cell to test.
 bool facet_closer_than(std::optional<detail::TriangleDistanceFilter>& filter,
@@ -579,7 +624,7 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
     }
     if (small.empty()) continue;
     if (gathered) {
-      test_candidates(small, candidates, z, out);
+      test_candidates(small, patch.slab, candidates, z, out);
     } else {
       mark_near_small_facets(small, patch.slab, z, out);
     }
@@ -612,7 +657,7 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
                          std::max(f.j0, tj0),
                          std::min(f.j1, tj1)});
     }
-    test_candidates(in_tile, candidates, z, out);
+    test_candidates(in_tile, slab, candidates, z, out);
   };
   for_each_tile(pi0, pi1, pj0, pj1, test_tile);
 }
@@ -635,6 +680,8 @@ void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::i
     const double lo = slab.lo - t;
     const double hi = slab.hi + t;
     const double t2_far = t * t * (1.0 + 1e-9);
+    const Vec3 axes[3] = {slab.n, slab.u, slab.v};
+    const FrameBox patch_box{{slab.lo, slab.u_lo, slab.v_lo}, {slab.hi, slab.u_hi, slab.v_hi}};
     const GridAxis x_axis(grid_.x0, grid_.dx, grid_.nx);
     for (std::int64_t r = 0; r < rows; ++r) {
       if (interior[r] == 0) continue;
@@ -664,25 +711,10 @@ void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::i
       }
       interior[r] &= keep;
       // The box of the frame: a cell beside the patch, within the slab but past its facets'
-      // extent along the tangents (near a neighbour's facets), is dropped here. Its squared
-      // distance to the box, each term from below, against t^2 widened by far more than the
-      // frame's departure from orthonormal and the rounding of these sums.
-      std::uint64_t left = interior[r];
-      if (left == 0) continue;
-      const double rest_u = slab.u.y * yc + slab.u.z * z;
-      const double rest_v = slab.v.y * yc + slab.v.z * z;
-      while (left != 0) {
+      // extent along the tangents (near a neighbour's facets), is dropped here.
+      for (std::uint64_t left = interior[r]; left != 0; left &= left - 1) {
         const int bit = std::countr_zero(left);
-        left &= left - 1;
-        const double x = grid_.xc(static_cast<std::uint32_t>(pi0 + bit));
-        const double abs_error = rest_error + 1e-9 * std::fabs(x);
-        const auto outside = [&](double s, double s_lo, double s_hi) {
-          return std::max({s_lo - s - abs_error, 0.0, s - s_hi - abs_error});
-        };
-        const double dn = outside(slab.n.x * x + rest, slab.lo, slab.hi);
-        const double du = outside(slab.u.x * x + rest_u, slab.u_lo, slab.u_hi);
-        const double dv = outside(slab.v.x * x + rest_v, slab.v_lo, slab.v_hi);
-        if ((dn * dn + du * du + dv * dv) * (1.0 - 1e-9) >= t2_far) {
+        if (beyond_frame_box(axes, patch_box, cell_centre(pi0 + bit, pj0 + r, z), t2_far)) {
           interior[r] &= ~(std::uint64_t{1} << bit);
         }
       }
@@ -700,15 +732,23 @@ void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::i
   }
 }
 
-void BoundaryShell::test_candidates(std::span<const FacetReach> facets, Candidates& candidates,
-                                    double z, std::vector<CellClass>& out) const {
+void BoundaryShell::test_candidates(std::span<const FacetReach> facets, const Slab& slab,
+                                    Candidates& candidates, double z,
+                                    std::vector<CellClass>& out) const {
   const std::uint32_t nx = grid_.nx;
   const std::int64_t pi0 = candidates.pi0;
   const std::int64_t pj0 = candidates.pj0;
   std::uint64_t* interior = candidates.interior;
+  // A facet's box in the frame of the patch's slab, where the patch's facets lie flat: most
+  // candidates beside a facet are farther than t from that box, and are passed by without the
+  // facet's filter, whose set-up costs more than many such tests.
+  const Vec3 axes[3] = {slab.n, slab.u, slab.v};
+  const double t2_far = thickness_mm_ * thickness_mm_ * (1.0 + 1e-9);
   std::optional<detail::TriangleDistanceFilter> filter;
+  FrameBox frame_box{};
   for (const FacetReach& facet : facets) {
     filter.reset();
+    bool framed = false;
     const std::uint64_t in_box = run_bits(facet.i0, facet.i1, pi0);
     const std::int64_t j_end = std::min(facet.j1, pj0 + candidates.last_row);
     for (std::int64_t j = std::max(facet.j0, pj0 + candidates.first_row); j <= j_end; ++j) {
@@ -718,7 +758,15 @@ void BoundaryShell::test_candidates(std::span<const FacetReach> facets, Candidat
         const int bit = std::countr_zero(left);
         left &= left - 1;
         const std::int64_t i = pi0 + bit;
-        if (facet_closer_than(filter, facet.corner, thickness_mm_, cell_centre(i, j, z))) {
+        const Vec3 p = cell_centre(i, j, z);
+        if (slab.usable) {
+          if (!framed) {
+            frame_box = facet_frame_box(axes, facet.corner);
+            framed = true;
+          }
+          if (beyond_frame_box(axes, frame_box, p, t2_far)) continue;
+        }
+        if (facet_closer_than(filter, facet.corner, thickness_mm_, p)) {
           out[static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i)] = CellClass::Boundary;
           interior[r] &= ~(std::uint64_t{1} << bit);
         }

@@ -104,8 +104,8 @@ class BoundaryShell {
                          Candidates& candidates) const;
   /// Tests the facets on the candidates of their boxes (boxes that `candidates` hold), marking
   /// those closer than t and clearing their bits.
-  void test_candidates(std::span<const FacetReach> facets, Candidates& candidates, double z,
-                       std::vector<CellClass>& out) const;
+  void test_candidates(std::span<const FacetReach> facets, const Slab& slab, Candidates& candidates,
+                       double z, std::vector<CellClass>& out) const;
   Vec3 cell_centre(std::int64_t i, std::int64_t j, double z) const {
     return {grid_.xc(static_cast<std::uint32_t>(i)), grid_.yc(static_cast<std::uint32_t>(j)), z};
   }
