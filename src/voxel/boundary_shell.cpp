@@ -211,7 +211,8 @@ FrameBox facet_frame_box(const Vec3 (&axes)[3], const Vec3* const* corner) {
 
 /// Whether p is certainly at least t from the box (t2_far being t^2 widened by 1e-9): then it is
 /// at least t from every facet inside it. Each term of the squared distance is taken from below,
-/// by 1e-9 of p's scale, far more than the rounding of the dot products.
+/// by 1e-9 of p's scale, far more than the rounding of the dot products. A sum that overflowed
+/// (coordinates near the largest doubles) proves nothing.
 bool beyond_frame_box(const Vec3 (&axes)[3], const FrameBox& box, const Vec3& p, double t2_far) {
   const std::array<double, 3> q = frame_coordinates(axes, p);
   const double error = 1e-9 * (std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z) + 1.0);
@@ -220,7 +221,7 @@ bool beyond_frame_box(const Vec3 (&axes)[3], const FrameBox& box, const Vec3& p,
     const double d = std::max({box.lo[a] - q[a] - error, 0.0, q[a] - box.hi[a] - error});
     sum += d * d;
   }
-  return sum * (1.0 - 1e-9) >= t2_far;
+  return std::isfinite(sum) && sum * (1.0 - 1e-9) >= t2_far;
 }
 
 /// Whether p is closer than t to the facet with these corners. Its filter is built on the
