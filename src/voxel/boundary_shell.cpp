@@ -178,8 +178,8 @@ void first_ring(const std::uint8_t* here, const std::uint8_t* below, const std::
   }
 }
 
-/// A box in the frame of a patch's slab (n, u, v), [lo[a], hi[a]] along each axis a: the slab's
-/// own box holds all the patch's facets, a facet's box (facet_frame_box) that facet alone.
+/// A facet's box in the frame of its patch's slab (n, u, v), [lo[a], hi[a]] along each axis a,
+/// within the slab's own box.
 struct FrameBox {
   double lo[3], hi[3];
 };
@@ -209,16 +209,18 @@ FrameBox facet_frame_box(const Vec3 (&axes)[3], const Vec3* const* corner) {
   return box;
 }
 
-/// Whether p is certainly at least t from the box (t2_far being t^2 widened by 1e-9): then it is
-/// at least t from every facet inside it. Each term of the squared distance is taken from below,
-/// by 1e-9 of p's scale, far more than the rounding of the dot products. A sum that overflowed
-/// (coordinates near the largest doubles) proves nothing.
-bool beyond_frame_box(const Vec3 (&axes)[3], const FrameBox& box, const Vec3& p, double t2_far) {
+/// Whether p is certainly at least t from the box [lo[a], hi[a]] of the frame (t2_far being t^2
+/// widened by 1e-9): then it is at least t from every facet inside it (a slab's box, a facet's).
+/// Each term of the squared distance is taken from below, by 1e-9 of p's scale, far more than
+/// the rounding of the dot products. A sum that overflowed (coordinates near the largest
+/// doubles) proves nothing.
+bool beyond_frame_box(const Vec3 (&axes)[3], const double (&lo)[3], const double (&hi)[3],
+                      const Vec3& p, double t2_far) {
   const std::array<double, 3> q = frame_coordinates(axes, p);
   const double error = 1e-9 * (std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z) + 1.0);
   double sum = 0.0;
   for (int a = 0; a < 3; ++a) {
-    const double d = std::max({box.lo[a] - q[a] - error, 0.0, q[a] - box.hi[a] - error});
+    const double d = std::max({lo[a] - q[a] - error, 0.0, q[a] - hi[a] - error});
     sum += d * d;
   }
   return std::isfinite(sum) && sum * (1.0 - 1e-9) >= t2_far;
@@ -257,43 +259,39 @@ BoundaryShell::Slab BoundaryShell::slab_of(std::span<const std::array<VertexInde
   Slab out;
   const double length = std::sqrt(sum.x * sum.x + sum.y * sum.y + sum.z * sum.z);
   if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(scale)) return out;
-  out.n = {sum.x / length, sum.y / length, sum.z / length};
+  const Vec3 n{sum.x / length, sum.y / length, sum.z / length};
   // The tangents: u across n and the axis least along it, v across n and u.
-  const Vec3& n = out.n;
   const double ax = std::fabs(n.x), ay = std::fabs(n.y), az = std::fabs(n.z);
-  const Vec3 axis =
+  const Vec3 least =
       ax <= ay && ax <= az ? Vec3{1, 0, 0} : (ay <= az ? Vec3{0, 1, 0} : Vec3{0, 0, 1});
-  const Vec3 u{n.y * axis.z - n.z * axis.y, n.z * axis.x - n.x * axis.z,
-               n.x * axis.y - n.y * axis.x};
-  const double u_length = std::sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
-  out.u = {u.x / u_length, u.y / u_length, u.z / u_length};
-  out.v = {n.y * out.u.z - n.z * out.u.y, n.z * out.u.x - n.x * out.u.z,
-           n.x * out.u.y - n.y * out.u.x};
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  out.lo = out.u_lo = out.v_lo = kInf;
-  out.hi = out.u_hi = out.v_hi = -kInf;
-  const auto widen = [](const Vec3& d, const Vec3& p, double& lo, double& hi) {
-    const double s = d.x * p.x + d.y * p.y + d.z * p.z;
-    lo = std::min(lo, s);
-    hi = std::max(hi, s);
-  };
+  const Vec3 across{n.y * least.z - n.z * least.y, n.z * least.x - n.x * least.z,
+                    n.x * least.y - n.y * least.x};
+  const double across_length =
+      std::sqrt(across.x * across.x + across.y * across.y + across.z * across.z);
+  const Vec3 u{across.x / across_length, across.y / across_length, across.z / across_length};
+  out.axis[0] = n;
+  out.axis[1] = u;
+  out.axis[2] = {n.y * u.z - n.z * u.y, n.z * u.x - n.x * u.z, n.x * u.y - n.y * u.x};
+  for (int a = 0; a < 3; ++a) {
+    out.lo[a] = std::numeric_limits<double>::infinity();
+    out.hi[a] = -std::numeric_limits<double>::infinity();
+  }
   for (const auto& tri : triangles) {
     for (const VertexIndex corner : tri) {
-      const Vec3& p = vertices[corner];
-      widen(out.n, p, out.lo, out.hi);
-      widen(out.u, p, out.u_lo, out.u_hi);
-      widen(out.v, p, out.v_lo, out.v_hi);
+      const std::array<double, 3> q = frame_coordinates(out.axis, vertices[corner]);
+      for (int a = 0; a < 3; ++a) {
+        out.lo[a] = std::min(out.lo[a], q[a]);
+        out.hi[a] = std::max(out.hi[a], q[a]);
+      }
     }
   }
   // The computed n, u and v are unit and orthogonal to a few ulps, and each dot product is off
   // by a few ulps of the coordinates' scale: 1e-9 of it covers both with room to spare.
   const double margin = 1e-9 * (scale + 1.0);
-  out.lo -= margin;
-  out.hi += margin;
-  out.u_lo -= margin;
-  out.u_hi += margin;
-  out.v_lo -= margin;
-  out.v_hi += margin;
+  for (int a = 0; a < 3; ++a) {
+    out.lo[a] -= margin;
+    out.hi[a] += margin;
+  }
   out.usable = true;
   return out;
 }
@@ -678,29 +676,28 @@ void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::i
   // Cells beyond the slab of the patch's facets, widened by t, are farther than t from each of
   // them: most of the patch's box past the shell, which no facet then tests.
   if (slab.usable) {
-    const double lo = slab.lo - t;
-    const double hi = slab.hi + t;
+    const Vec3& n = slab.n();
+    const double lo = slab.lo[0] - t;
+    const double hi = slab.hi[0] + t;
     const double t2_far = t * t * (1.0 + 1e-9);
-    const Vec3 axes[3] = {slab.n, slab.u, slab.v};
-    const FrameBox patch_box{{slab.lo, slab.u_lo, slab.v_lo}, {slab.hi, slab.u_hi, slab.v_hi}};
     const GridAxis x_axis(grid_.x0, grid_.dx, grid_.nx);
     for (std::int64_t r = 0; r < rows; ++r) {
       if (interior[r] == 0) continue;
       const double yc = grid_.yc(static_cast<std::uint32_t>(pj0 + r));
       // n · p = n.x x + rest along the row.
-      const double rest = slab.n.y * yc + slab.n.z * z;
+      const double rest = n.y * yc + n.z * z;
       const double rest_error = 1e-9 * (std::fabs(yc) + std::fabs(z) + 1.0);
       std::int64_t i0 = pi0;
       std::int64_t i1 = pi1;
-      if (std::fabs(slab.n.x) < 1e-6) {
+      if (std::fabs(n.x) < 1e-6) {
         // Nearly across the row: the row is in the slab or not as a whole (|n.x x| adds at most
         // 1e-6 of the coordinates, inside the bound below).
         const double spread = 1e-6 * (std::fabs(grid_.xc(static_cast<std::uint32_t>(pi0))) +
                                       std::fabs(grid_.xc(static_cast<std::uint32_t>(pi1))));
         if (rest + spread + rest_error < lo || rest - spread - rest_error > hi) i1 = i0 - 1;
       } else {
-        double x_lo = (lo - rest_error - rest) / slab.n.x;
-        double x_hi = (hi + rest_error - rest) / slab.n.x;
+        double x_lo = (lo - rest_error - rest) / n.x;
+        double x_hi = (hi + rest_error - rest) / n.x;
         if (x_lo > x_hi) std::swap(x_lo, x_hi);
         const auto [a0, a1] = x_axis.cells_reaching(x_lo, x_hi);
         i0 = std::max(i0, a0);
@@ -715,7 +712,8 @@ void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::i
       // extent along the tangents (near a neighbour's facets), is dropped here.
       for (std::uint64_t left = interior[r]; left != 0; left &= left - 1) {
         const int bit = std::countr_zero(left);
-        if (beyond_frame_box(axes, patch_box, cell_centre(pi0 + bit, pj0 + r, z), t2_far)) {
+        if (beyond_frame_box(slab.axis, slab.lo, slab.hi, cell_centre(pi0 + bit, pj0 + r, z),
+                             t2_far)) {
           interior[r] &= ~(std::uint64_t{1} << bit);
         }
       }
@@ -743,7 +741,6 @@ void BoundaryShell::test_candidates(std::span<const FacetReach> facets, const Sl
   // A facet's box in the frame of the patch's slab, where the patch's facets lie flat: most
   // candidates beside a facet are farther than t from that box, and are passed by without the
   // facet's filter, whose set-up costs more than many such tests.
-  const Vec3 axes[3] = {slab.n, slab.u, slab.v};
   const double t2_far = thickness_mm_ * thickness_mm_ * (1.0 + 1e-9);
   std::optional<detail::TriangleDistanceFilter> filter;
   FrameBox frame_box{};
@@ -762,10 +759,10 @@ void BoundaryShell::test_candidates(std::span<const FacetReach> facets, const Sl
         const Vec3 p = cell_centre(i, j, z);
         if (slab.usable) {
           if (!framed) {
-            frame_box = facet_frame_box(axes, facet.corner);
+            frame_box = facet_frame_box(slab.axis, facet.corner);
             framed = true;
           }
-          if (beyond_frame_box(axes, frame_box, p, t2_far)) continue;
+          if (beyond_frame_box(slab.axis, frame_box.lo, frame_box.hi, p, t2_far)) continue;
         }
         if (facet_closer_than(filter, facet.corner, thickness_mm_, p)) {
           out[static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i)] = CellClass::Boundary;

@@ -60,15 +60,14 @@ class BoundaryShell {
   /// A slab across a unit direction n that holds a set of triangles: every point q of them has
   /// lo <= n · q <= hi. A point p with n · p outside [lo - t, hi + t] is farther than t from each
   /// of them (|n · (p - q)| <= |p - q|), whatever their shape.
-  /// With two unit tangents u, v completing n to a frame, the triangles also lie within
-  /// [u_lo, u_hi] and [v_lo, v_hi] along them: a point's distance to that box bounds its
+  /// With two unit tangents u, v completing n to a frame, the triangles also lie within the box
+  /// [lo[a], hi[a]] along each axis a of (n, u, v): a point's distance to that box bounds its
   /// distance to each triangle from below.
   struct Slab {
-    Vec3 n{0, 0, 0};
-    double lo = 0.0, hi = 0.0;
-    Vec3 u{0, 0, 0}, v{0, 0, 0};
-    double u_lo = 0.0, u_hi = 0.0, v_lo = 0.0, v_hi = 0.0;
+    Vec3 axis[3] = {};  ///< n, u, v
+    double lo[3] = {}, hi[3] = {};
     bool usable = false;
+    const Vec3& n() const { return axis[0]; }
   };
   static Slab slab_of(std::span<const std::array<VertexIndex, 3>> triangles,
                       const std::vector<Vec3>& vertices);
