@@ -823,16 +823,10 @@ void BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, double z,
       if ((interior[r] & reached) == 0) continue;
       const double dy = grid_.yc(static_cast<std::uint32_t>(pj0 + r)) - v.y;
       const double dyz2 = dy * dy + dz2;
-      const double h2 = t2 - dyz2;
-      if (!(h2 > 0.0)) continue;
-      const double h = std::sqrt(h2);
-      const auto [g0, g1] = x_axis.centres_within(v.x - h, v.x + h);
-      const std::int64_t i0 = std::max(g0, b0);
-      const std::int64_t i1 = std::min(g1, b1);
-      if (i0 > i1) continue;
-      // The interior cells of the guessed run, its outermost ones dropped until both ends are
-      // certainly closer: a row where the vertex reaches no interior cell costs no check.
-      std::uint64_t hits = interior[r] & run_bits(i0, i1, pi0);
+      if (!(dyz2 < t2)) continue;
+      // The interior cells the vertex reaches in the layer, its outermost ones dropped until both
+      // ends are certainly closer: a row where the vertex reaches no interior cell costs no check.
+      std::uint64_t hits = interior[r] & reached;
       const auto closer_at = [&](int bit) {
         return certainly_closer(grid_.xc(static_cast<std::uint32_t>(pi0 + bit)) - v.x, dyz2);
       };
