@@ -209,23 +209,6 @@ FrameBox facet_frame_box(const Vec3 (&axes)[3], const Vec3* const* corner) {
   return box;
 }
 
-/// Whether p is certainly at least t from the box [lo[a], hi[a]] of the frame (t2_far being t^2
-/// widened by 1e-9): then it is at least t from every facet inside it (a slab's box, a facet's).
-/// Each term of the squared distance is taken from below, by 1e-9 of p's scale, far more than
-/// the rounding of the dot products. A sum that overflowed (coordinates near the largest
-/// doubles) proves nothing.
-bool beyond_frame_box(const Vec3 (&axes)[3], const double (&lo)[3], const double (&hi)[3],
-                      const Vec3& p, double t2_far) {
-  const std::array<double, 3> q = frame_coordinates(axes, p);
-  const double error = 1e-9 * (std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z) + 1.0);
-  double sum = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    const double d = std::max({lo[a] - q[a] - error, 0.0, q[a] - hi[a] - error});
-    sum += d * d;
-  }
-  return std::isfinite(sum) && sum * (1.0 - 1e-9) >= t2_far;
-}
-
 /// Whether p is closer than t to the facet with these corners. Its filter is built on the
 /// first call: the boxes of many facets hold no cell to test.
 bool facet_closer_than(std::optional<detail::TriangleDistanceFilter>& filter,
@@ -235,6 +218,21 @@ bool facet_closer_than(std::optional<detail::TriangleDistanceFilter>& filter,
 }
 
 }  // namespace
+
+BoundaryShell::FramePoint BoundaryShell::frame_point(const Vec3 (&axes)[3], const Vec3& p) {
+  const std::array<double, 3> q = frame_coordinates(axes, p);
+  return {{q[0], q[1], q[2]}, 1e-9 * (std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z) + 1.0)};
+}
+
+bool BoundaryShell::beyond_frame_box(const FramePoint& p, const double (&lo)[3],
+                                     const double (&hi)[3], double t2_far) {
+  double sum = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    const double d = std::max({lo[a] - p.q[a] - p.error, 0.0, p.q[a] - hi[a] - p.error});
+    sum += d * d;
+  }
+  return std::isfinite(sum) && sum * (1.0 - 1e-9) >= t2_far;
+}
 
 /// The slab of a patch's facets across their area-weighted mean normal, widened by a margin far
 /// above the rounding of these sums and of the row arithmetic that uses it (1e-9 of the largest
@@ -709,11 +707,13 @@ void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::i
       }
       interior[r] &= keep;
       // The box of the frame: a cell beside the patch, within the slab but past its facets'
-      // extent along the tangents (near a neighbour's facets), is dropped here.
+      // extent along the tangents (near a neighbour's facets), is dropped here. The frame
+      // coordinates of those kept serve each facet's box too (test_candidates).
       for (std::uint64_t left = interior[r]; left != 0; left &= left - 1) {
         const int bit = std::countr_zero(left);
-        if (beyond_frame_box(slab.axis, slab.lo, slab.hi, cell_centre(pi0 + bit, pj0 + r, z),
-                             t2_far)) {
+        FramePoint& p = candidates.frame[static_cast<std::size_t>(r) * 64 + bit];
+        p = frame_point(slab.axis, cell_centre(pi0 + bit, pj0 + r, z));
+        if (beyond_frame_box(p, slab.lo, slab.hi, t2_far)) {
           interior[r] &= ~(std::uint64_t{1} << bit);
         }
       }
@@ -756,14 +756,15 @@ void BoundaryShell::test_candidates(std::span<const FacetReach> facets, const Sl
         const int bit = std::countr_zero(left);
         left &= left - 1;
         const std::int64_t i = pi0 + bit;
-        const Vec3 p = cell_centre(i, j, z);
         if (slab.usable) {
           if (!framed) {
             frame_box = facet_frame_box(slab.axis, facet.corner);
             framed = true;
           }
-          if (beyond_frame_box(slab.axis, frame_box.lo, frame_box.hi, p, t2_far)) continue;
+          const FramePoint& q = candidates.frame[static_cast<std::size_t>(r) * 64 + bit];
+          if (beyond_frame_box(q, frame_box.lo, frame_box.hi, t2_far)) continue;
         }
+        const Vec3 p = cell_centre(i, j, z);
         if (facet_closer_than(filter, facet.corner, thickness_mm_, p)) {
           out[static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i)] = CellClass::Boundary;
           interior[r] &= ~(std::uint64_t{1} << bit);

@@ -71,12 +71,28 @@ class BoundaryShell {
   };
   static Slab slab_of(std::span<const std::array<VertexIndex, 3>> triangles,
                       const std::vector<Vec3>& vertices);
+  /// A point's coordinates along the axes of a slab's frame, and the bound 1e-9 of its scale
+  /// that each is taken as uncertain by (far above the dot products' rounding).
+  struct FramePoint {
+    double q[3];
+    double error;
+  };
+  static FramePoint frame_point(const Vec3 (&axes)[3], const Vec3& p);
+  /// Whether the point is certainly at least t from the box [lo[a], hi[a]] of the frame (t2_far
+  /// being t^2 widened by 1e-9): then it is at least t from every facet inside it (a slab's box,
+  /// a facet's). Each term of the squared distance is taken from below by the point's error. A
+  /// sum that overflowed (coordinates near the largest doubles) proves nothing.
+  static bool beyond_frame_box(const FramePoint& p, const double (&lo)[3], const double (&hi)[3],
+                               double t2_far);
   /// The cells of a box of a layer that a patch's facets may still have to mark: its interior
   /// cells (bit i - pi0 of word j - pj0) within the slab of the patch's facets widened by t.
   struct Candidates {
     std::int64_t pi0 = 0, pj0 = 0, rows = 0;
     std::int64_t first_row = 0, last_row = -1;  ///< the words that hold a bit
     std::uint64_t interior[kMaxPatchRows];
+    /// A candidate's centre in the slab's frame (at 64 r + bit), when the slab is usable.
+    std::unique_ptr<FramePoint[]> frame =
+        std::make_unique_for_overwrite<FramePoint[]>(kMaxPatchRows * 64);
     bool none() const { return first_row > last_row; }
     /// Whether a facet's box of cells lies within the words.
     bool hold(const FacetReach& facet) const {
