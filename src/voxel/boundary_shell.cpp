@@ -596,6 +596,8 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
   std::vector<FacetReach> small;
   double box[4];
   Candidates candidates;
+  FramePoint few_points[kFewCandidates];
+  const double t2_far = t * t * (1.0 + 1e-9);
   for (std::size_t q = begin; q < end; ++q) {
     const Patch& patch = patches_[q];
     if (patch.zmax < z_lo) continue;
@@ -607,9 +609,15 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
         y_axis.cells_reaching(patch.facet_lo.y - reach, patch.facet_hi.y + reach);
     if (ci0 > ci1 || cj0 > cj1) continue;
     bool gathered = ci1 - ci0 < 64 && cj1 - cj0 < kMaxPatchRows;
+    // When the candidates are very few (as in many patches that have any), a facet whose box
+    // in the slab's frame is t from each of them marks nothing, and is passed by before its
+    // reach in the layer is worked out. The candidates are every cell any facet of the patch
+    // could still mark, so this holds for wide facets too.
+    std::size_t few = 0;
     if (gathered) {
       gather_candidates(ci0, ci1, cj0, cj1 - cj0 + 1, patch.slab, z, out, candidates);
       if (candidates.none()) continue;
+      if (patch.slab.usable) few = list_few_candidates(candidates, few_points);
     }
     small.clear();
     for (std::uint32_t r = patch.begin; r < patch.end; ++r) {
@@ -620,6 +628,15 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
       const double z_min = std::min({a.z, b.z, c.z});
       const double z_max = std::max({a.z, b.z, c.z});
       if (z_max < z_lo || z_min > z_hi) continue;
+      if (few != 0) {
+        const Vec3* corners[3] = {&a, &b, &c};
+        const FrameBox frame_box = facet_frame_box(patch.slab.axis, corners);
+        const bool reaches_one =
+            std::any_of(few_points, few_points + few, [&](const FramePoint& p) {
+              return !beyond_frame_box(p, frame_box.lo, frame_box.hi, t2_far);
+            });
+        if (!reaches_one) continue;
+      }
       if (!slab_footprint(a, b, c, z_lo, z_hi, box)) continue;
       // A point closer than t to the facet is closer than sqrt(t^2 - gap^2) to it across the
       // layer, gap being the facet's z-distance from the layer's plane: the far layers of the
@@ -752,6 +769,19 @@ void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::i
   while (candidates.last_row >= candidates.first_row && interior[candidates.last_row] == 0) {
     --candidates.last_row;
   }
+}
+
+std::size_t BoundaryShell::list_few_candidates(const Candidates& candidates,
+                                               FramePoint (&points)[kFewCandidates]) {
+  std::size_t count = 0;
+  for (std::int64_t r = candidates.first_row; r <= candidates.last_row; ++r) {
+    for (std::uint64_t left = candidates.interior[r]; left != 0; left &= left - 1) {
+      if (count == kFewCandidates) return 0;
+      points[count++] = candidates.frame[static_cast<std::size_t>(r) * 64 +
+                                         static_cast<std::size_t>(std::countr_zero(left))];
+    }
+  }
+  return count;
 }
 
 void BoundaryShell::test_candidates(std::span<const FacetReach> facets, const Slab& slab,
