@@ -232,6 +232,19 @@ FrameBox facet_frame_box(const Vec3 (&axes)[3], const Vec3* const* corner) {
   return box;
 }
 
+/// Whether p is certainly at least t from the box [lo[a], hi[a]] of x, y and z (t2_far being
+/// t^2 widened by 1e-9): each difference is within an ulp of its own magnitude, and the sum of
+/// their squares within a few, far inside the margins. A sum that overflowed proves nothing.
+bool beyond_box(const Vec3& p, const double (&lo)[3], const double (&hi)[3], double t2_far) {
+  const double q[3] = {p.x, p.y, p.z};
+  double sum = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    const double d = std::max({lo[a] - q[a], 0.0, q[a] - hi[a]});
+    sum += d * d;
+  }
+  return std::isfinite(sum) && sum * (1.0 - 1e-9) >= t2_far;
+}
+
 /// Whether p is closer than t to the facet with these corners. Its filter is built on the
 /// first call: the boxes of many facets hold no cell to test.
 bool facet_closer_than(std::optional<detail::TriangleDistanceFilter>& filter,
@@ -596,7 +609,7 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
   std::vector<FacetReach> small;
   double box[4];
   Candidates candidates;
-  FramePoint few_points[kFewCandidates];
+  FewCandidate few_points[kFewCandidates];
   const double t2_far = t * t * (1.0 + 1e-9);
   for (std::size_t q = begin; q < end; ++q) {
     const Patch& patch = patches_[q];
@@ -617,7 +630,7 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
     if (gathered) {
       gather_candidates(ci0, ci1, cj0, cj1 - cj0 + 1, patch.slab, z, out, candidates);
       if (candidates.none()) continue;
-      if (patch.slab.usable) few = list_few_candidates(candidates, few_points);
+      if (patch.slab.usable) few = list_few_candidates(candidates, z, few_points);
     }
     small.clear();
     for (std::uint32_t r = patch.begin; r < patch.end; ++r) {
@@ -629,13 +642,23 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
       const double z_max = std::max({a.z, b.z, c.z});
       if (z_max < z_lo || z_min > z_hi) continue;
       if (few != 0) {
+        // The facet's box in x, y and z first (its corners' own coordinates, no rounding but
+        // that of the distance's few operations, which the margins cover), then its box in
+        // the slab's frame, which is tighter for a tilted facet but takes nine products a
+        // corner.
+        const double box_lo[3] = {std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y}), z_min};
+        const double box_hi[3] = {std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y}), z_max};
+        const bool near_box = std::any_of(few_points, few_points + few, [&](const FewCandidate& p) {
+          return !beyond_box(p.centre, box_lo, box_hi, t2_far);
+        });
+        if (!near_box) continue;
         const Vec3* corners[3] = {&a, &b, &c};
         const FrameBox frame_box = facet_frame_box(patch.slab.axis, corners);
-        const bool reaches_one =
-            std::any_of(few_points, few_points + few, [&](const FramePoint& p) {
-              return !beyond_frame_box(p, frame_box.lo, frame_box.hi, t2_far);
+        const bool near_frame_box =
+            std::any_of(few_points, few_points + few, [&](const FewCandidate& p) {
+              return !beyond_frame_box(p.frame, frame_box.lo, frame_box.hi, t2_far);
             });
-        if (!reaches_one) continue;
+        if (!near_frame_box) continue;
       }
       if (!slab_footprint(a, b, c, z_lo, z_hi, box)) continue;
       // A point closer than t to the facet is closer than sqrt(t^2 - gap^2) to it across the
@@ -771,14 +794,15 @@ void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::i
   }
 }
 
-std::size_t BoundaryShell::list_few_candidates(const Candidates& candidates,
-                                               FramePoint (&points)[kFewCandidates]) {
+std::size_t BoundaryShell::list_few_candidates(const Candidates& candidates, double z,
+                                               FewCandidate (&points)[kFewCandidates]) const {
   std::size_t count = 0;
   for (std::int64_t r = candidates.first_row; r <= candidates.last_row; ++r) {
     for (std::uint64_t left = candidates.interior[r]; left != 0; left &= left - 1) {
       if (count == kFewCandidates) return 0;
-      points[count++] = candidates.frame[static_cast<std::size_t>(r) * 64 +
-                                         static_cast<std::size_t>(std::countr_zero(left))];
+      const int bit = std::countr_zero(left);
+      points[count++] = {candidates.frame[static_cast<std::size_t>(r) * 64 + bit],
+                         cell_centre(candidates.pi0 + bit, candidates.pj0 + r, z)};
     }
   }
   return count;

@@ -99,11 +99,16 @@ class BoundaryShell {
       return facet.i0 >= pi0 && facet.i1 < pi0 + 64 && facet.j0 >= pj0 && facet.j1 < pj0 + rows;
     }
   };
-  /// The frame points of the candidates, in `points`, when there are at most kFewCandidates:
-  /// their count, or 0 when there are more.
+  /// A candidate's centre, and its coordinates in the slab's frame.
+  struct FewCandidate {
+    FramePoint frame;
+    Vec3 centre;
+  };
+  /// The candidates of layer z, in `points`, when there are at most kFewCandidates: their
+  /// count, or 0 when there are more.
   static constexpr std::size_t kFewCandidates = 4;
-  static std::size_t list_few_candidates(const Candidates& candidates,
-                                         FramePoint (&points)[kFewCandidates]);
+  std::size_t list_few_candidates(const Candidates& candidates, double z,
+                                  FewCandidate (&points)[kFewCandidates]) const;
   /// Calls visit(i0, i1, j0, rows) for the tiles of at most 64 columns by kMaxPatchRows rows
   /// that cover columns pi0 .. pi1 and rows pj0 .. pj1 (none when either range is empty).
   template <class Visit>
