@@ -67,6 +67,14 @@ class BinaryCellsWriter final : public detail::SingleFileSink {
   Result<void> write_layer(detail::LayerBytes& out, const LayerResult& layer) const override {
     const std::span<const CellClass> cells = layer.cells;
     const std::size_t n = cells.size();
+    if (std::string* memory = out.memory()) {
+      // Held in memory: packed straight into it, checked first so that a refused layer adds
+      // nothing.
+      const std::size_t bad = first_unstorable_cell(cells);
+      if (bad < n) return reserved_code_error(layer.layer, bad, run().grid.nx, cells[bad]);
+      append_packed_cells(cells, *memory);
+      return {};
+    }
     std::string chunk;
     chunk.reserve(kChunkBytes);
     for (std::size_t base = 0; base < n; base += 4 * kChunkBytes) {

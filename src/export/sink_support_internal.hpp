@@ -83,6 +83,9 @@ class LayerBytes {
   void reserve_more(std::size_t bytes) {
     if (memory_ != nullptr) memory_->reserve(memory_->size() + bytes);
   }
+  /// The memory the bytes go to, or null when they go to a file: a writer may then encode
+  /// straight into it rather than through a buffer of its own.
+  std::string* memory() const { return memory_; }
   void write(std::string_view bytes) {
     if (file_ != nullptr) {
       file_->write(bytes);

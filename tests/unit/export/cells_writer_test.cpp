@@ -23,6 +23,7 @@ using testing::codes;
 using testing::LayerData;
 using testing::list_tree;
 using testing::run_sink;
+using testing::run_sink_prepared;
 using testing::ScratchDir;
 using testing::small_layers;
 using testing::small_run;
@@ -277,6 +278,10 @@ TEST(CellsWriter, ALayerOfManyChunksReadsBackCellForCell) {
   std::vector<CellClass> expected = layers[0].cells;
   expected.insert(expected.end(), layers[1].cells.begin(), layers[1].cells.end());
   EXPECT_EQ(read->cells, expected);
+  // Prepared ahead, as the engine does, a layer is packed whole into memory: the same bytes.
+  auto prepared = make_cells_writer(dir / "prepared.cells");
+  ASSERT_TRUE(run_sink_prepared(*prepared, run, layers));
+  EXPECT_EQ(read_file(dir / "prepared.cells"), read_file(dir / "big.cells"));
 }
 
 TEST(CellsWriter, FinishBeforeAllLayersFailsAndWritesNothing) {
