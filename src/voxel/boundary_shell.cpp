@@ -214,20 +214,16 @@ std::array<double, 3> frame_coordinates(const Vec3 (&axes)[3], const Vec3& p) {
   return out;
 }
 
-/// The box of a facet's corners in the frame, widened by 1e-9 of their scale: far above the
-/// rounding of the dot products and the frame's departure from orthonormal.
-FrameBox facet_frame_box(const Vec3 (&axes)[3], const Vec3* const* corner) {
-  double scale = 1.0;
+/// The box of a facet's corners in the slab's frame, widened by the slab's margin (1e-9 of the
+/// patch's coordinates' scale): far above the rounding of the dot products and the frame's
+/// departure from orthonormal.
+FrameBox facet_frame_box(const Vec3 (&axes)[3], double margin, const Vec3* const* corner) {
   std::array<double, 3> q[3];
-  for (int c = 0; c < 3; ++c) {
-    const Vec3& p = *corner[c];
-    scale = std::max({scale, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
-    q[c] = frame_coordinates(axes, p);
-  }
+  for (int c = 0; c < 3; ++c) q[c] = frame_coordinates(axes, *corner[c]);
   FrameBox box{};
   for (int a = 0; a < 3; ++a) {
-    box.lo[a] = std::min({q[0][a], q[1][a], q[2][a]}) - 1e-9 * scale;
-    box.hi[a] = std::max({q[0][a], q[1][a], q[2][a]}) + 1e-9 * scale;
+    box.lo[a] = std::min({q[0][a], q[1][a], q[2][a]}) - margin;
+    box.hi[a] = std::max({q[0][a], q[1][a], q[2][a]}) + margin;
   }
   return box;
 }
@@ -321,10 +317,10 @@ BoundaryShell::Slab BoundaryShell::slab_of(std::span<const std::array<VertexInde
   }
   // The computed n, u and v are unit and orthogonal to a few ulps, and each dot product is off
   // by a few ulps of the coordinates' scale: 1e-9 of it covers both with room to spare.
-  const double margin = 1e-9 * (scale + 1.0);
+  out.margin = 1e-9 * (scale + 1.0);
   for (int a = 0; a < 3; ++a) {
-    out.lo[a] -= margin;
-    out.hi[a] += margin;
+    out.lo[a] -= out.margin;
+    out.hi[a] += out.margin;
   }
   out.usable = true;
   return out;
@@ -653,7 +649,7 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
         });
         if (!near_box) continue;
         const Vec3* corners[3] = {&a, &b, &c};
-        const FrameBox frame_box = facet_frame_box(patch.slab.axis, corners);
+        const FrameBox frame_box = facet_frame_box(patch.slab.axis, patch.slab.margin, corners);
         const bool near_frame_box =
             std::any_of(few_points, few_points + few, [&](const FewCandidate& p) {
               return !beyond_frame_box(p.frame, frame_box.lo, frame_box.hi, t2_far);
@@ -835,7 +831,7 @@ void BoundaryShell::test_candidates(std::span<const FacetReach> facets, const Sl
         const std::int64_t i = pi0 + bit;
         if (slab.usable) {
           if (!framed) {
-            frame_box = facet_frame_box(slab.axis, facet.corner);
+            frame_box = facet_frame_box(slab.axis, slab.margin, facet.corner);
             framed = true;
           }
           const FramePoint& q = candidates.frame[static_cast<std::size_t>(r) * 64 + bit];

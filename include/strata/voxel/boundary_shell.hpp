@@ -66,6 +66,9 @@ class BoundaryShell {
   struct Slab {
     Vec3 axis[3] = {};  ///< n, u, v
     double lo[3] = {}, hi[3] = {};
+    /// How far lo and hi were widened (1e-9 of the triangles' coordinates' scale); a box of
+    /// some of the triangles in the frame is widened by as much.
+    double margin = 0.0;
     bool usable = false;
     const Vec3& n() const { return axis[0]; }
   };
