@@ -44,22 +44,23 @@ std::uint64_t run_bits(std::int64_t first, std::int64_t last, std::int64_t base)
   return (n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1) << (first - base);
 }
 
-/// Bit i set when cells[i] is Interior, for i < 64 and i < available (the cells there are).
-std::uint64_t interior_bits(const CellClass* cells, std::size_t available) {
+/// Bit i set when cells[i] is Interior, for i < 64 and i < available (the cells there are);
+/// the bits from `wanted` on may be left clear.
+std::uint64_t interior_bits(const CellClass* cells, std::size_t available,
+                            [[maybe_unused]] std::size_t wanted) {
   const auto* codes = reinterpret_cast<const std::uint8_t*>(cells);
   const auto interior = static_cast<std::uint8_t>(CellClass::Interior);
 #if defined(__SSE2__)
-  if (available >= 64) {
-    // Sixteen cells a compare, their bits gathered by one movemask.
-    const __m128i want = _mm_set1_epi8(static_cast<char>(interior));
-    std::uint64_t bits = 0;
-    for (int q = 0; q < 4; ++q) {
-      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(codes + 16 * q));
-      const auto mask = static_cast<std::uint32_t>(_mm_movemask_epi8(_mm_cmpeq_epi8(v, want)));
-      bits |= static_cast<std::uint64_t>(mask) << (16 * q);
-    }
-    return bits;
-  }
+  // Sixteen cells a compare, their bits gathered by one movemask; a box of 32 columns or fewer
+  // (most patches') takes two.
+  const __m128i want = _mm_set1_epi8(static_cast<char>(interior));
+  const auto sixteen = [&](int q) {
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(codes + 16 * q));
+    const auto mask = static_cast<std::uint32_t>(_mm_movemask_epi8(_mm_cmpeq_epi8(v, want)));
+    return static_cast<std::uint64_t>(mask) << (16 * q);
+  };
+  if (wanted <= 32 && available >= 32) return sixteen(0) | sixteen(1);
+  if (available >= 64) return sixteen(0) | sixteen(1) | sixteen(2) | sixteen(3);
 #endif
   std::uint64_t bits = 0;
   for (std::size_t i = 0; i < std::min<std::size_t>(available, 64); ++i) {
@@ -854,8 +855,9 @@ void BoundaryShell::gather_interior(const std::vector<CellClass>& cells, std::in
   for (std::int64_t r = 0; r < rows; ++r) {
     const std::size_t at =
         static_cast<std::size_t>(pj0 + r) * grid_.nx + static_cast<std::size_t>(pi0);
-    interior[r] =
-        interior_bits(cells.data() + at, std::min<std::size_t>(64, cells.size() - at)) & columns;
+    interior[r] = interior_bits(cells.data() + at, std::min<std::size_t>(64, cells.size() - at),
+                                static_cast<std::size_t>(pi1 - pi0 + 1)) &
+                  columns;
   }
 }
 
