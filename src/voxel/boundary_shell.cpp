@@ -145,7 +145,7 @@ bool slab_footprint(const Vec3& a, const Vec3& b, const Vec3& c, double z_lo, do
 
 /// The first ring of a layer: every solid cell is Interior, or Boundary when one of its
 /// 6-neighbours is empty (outside the grid counts as empty; a missing layer is outside); the
-/// other cells must be Empty already (inside the grid's border they are written Empty again).
+/// other cells must be Empty already (some are written Empty again).
 /// Row by row: on the grid's border rows and columns, and when a layer beside is missing, every
 /// solid cell touches the outside.
 void first_ring(const std::uint8_t* here, const std::uint8_t* below, const std::uint8_t* above,
@@ -179,13 +179,16 @@ void first_ring(const std::uint8_t* here, const std::uint8_t* below, const std::
       return _mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(at)), zero);
     };
     for (; i + 17 <= nx; i += 16) {
+      // Sixteen empty cells stay as they are (outside the part: most of a layer's blocks).
+      const __m128i empty_here = is_empty(h + i);
+      if (_mm_movemask_epi8(empty_here) == 0xFFFF) continue;
       const __m128i open =
           _mm_or_si128(_mm_or_si128(_mm_or_si128(is_empty(h + i - 1), is_empty(h + i + 1)),
                                     _mm_or_si128(is_empty(north + i), is_empty(south + i))),
                        _mm_or_si128(is_empty(down + i), is_empty(up + i)));
       // Solid: Interior (1), or Boundary (3) when a neighbour is empty; empty cells stay 0.
       const __m128i code =
-          _mm_andnot_si128(is_empty(h + i), _mm_or_si128(one, _mm_and_si128(open, two)));
+          _mm_andnot_si128(empty_here, _mm_or_si128(one, _mm_and_si128(open, two)));
       _mm_storeu_si128(reinterpret_cast<__m128i*>(o + i), code);
     }
 #endif
