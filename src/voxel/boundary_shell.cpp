@@ -233,8 +233,10 @@ FrameBox facet_frame_box(const Vec3 (&axes)[3], double margin, const Vec3* const
 }
 
 /// Whether p is certainly at least t from the box [lo[a], hi[a]] of x, y and z (t2_far being
-/// t^2 widened by 1e-9): each difference is within an ulp of its own magnitude, and the sum of
-/// their squares within a few, far inside the margins. A sum that overflowed proves nothing.
+/// t^2 widened by 1e-9): BoundaryShell::beyond_frame_box for a point known exactly, each
+/// difference within an ulp of its own magnitude and the sum of their squares within a few, far
+/// inside the margins. Kept apart from it because the hot few-candidate pass then subtracts no
+/// error. A sum that overflowed proves nothing.
 bool beyond_box(const Vec3& p, const double (&lo)[3], const double (&hi)[3], double t2_far) {
   const double q[3] = {p.x, p.y, p.z};
   double sum = 0.0;
@@ -610,7 +612,7 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
   double box[4];
   Candidates candidates;
   FewCandidate few_points[kFewCandidates];
-  const double t2_far = t * t * (1.0 + 1e-9);
+  const double t2_far = far_squared();
   for (std::size_t q = begin; q < end; ++q) {
     const Patch& patch = patches_[q];
     if (patch.zmax < z_lo) continue;
@@ -740,7 +742,7 @@ void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::i
     const Vec3& n = slab.n();
     const double lo = slab.lo[0] - t;
     const double hi = slab.hi[0] + t;
-    const double t2_far = t * t * (1.0 + 1e-9);
+    const double t2_far = far_squared();
     const GridAxis x_axis(grid_.x0, grid_.dx, grid_.nx);
     for (std::int64_t r = 0; r < rows; ++r) {
       if (interior[r] == 0) continue;
@@ -818,7 +820,7 @@ void BoundaryShell::test_candidates(std::span<const FacetReach> facets, const Sl
   // A facet's box in the frame of the patch's slab, where the patch's facets lie flat: most
   // candidates beside a facet are farther than t from that box, and are passed by without the
   // facet's filter, whose set-up costs more than many such tests.
-  const double t2_far = thickness_mm_ * thickness_mm_ * (1.0 + 1e-9);
+  const double t2_far = far_squared();
   std::optional<detail::TriangleDistanceFilter> filter;
   FrameBox frame_box{};
   for (const FacetReach& facet : facets) {

@@ -87,6 +87,8 @@ class BoundaryShell {
   /// sum that overflowed (coordinates near the largest doubles) proves nothing.
   static bool beyond_frame_box(const FramePoint& p, const double (&lo)[3], const double (&hi)[3],
                                double t2_far);
+  /// t^2 widened by 1e-9: the square a box's distance is held to (beyond_frame_box).
+  double far_squared() const { return thickness_mm_ * thickness_mm_ * (1.0 + 1e-9); }
   /// The cells of a box of a layer that a patch's facets may still have to mark: its interior
   /// cells (bit i - pi0 of word j - pj0) within the slab of the patch's facets widened by t.
   struct Candidates {
