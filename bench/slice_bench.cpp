@@ -97,12 +97,12 @@ BENCHMARK(BM_ShellSetupSphere)->Unit(benchmark::kMillisecond);
 /// The solid layers k - reach .. k + reach of a model, and a lookup of them for the shell.
 struct SolidLayers {
   std::int64_t first = 0;
-  std::vector<std::vector<std::uint8_t>> layers;
+  std::vector<SolidRows> layers;
   SolidLayerLookup lookup() const {
-    return [this](std::int64_t q) -> const std::uint8_t* {
+    return [this](std::int64_t q) -> const SolidRows* {
       const std::int64_t at = q - first;
       return at >= 0 && at < static_cast<std::int64_t>(layers.size())
-                 ? layers[static_cast<std::size_t>(at)].data()
+                 ? &layers[static_cast<std::size_t>(at)]
                  : nullptr;
     };
   }

@@ -232,9 +232,9 @@ bool is_inside(FillRule rule, long long winding, long long count) {
   return rule == FillRule::EvenOdd ? (count & 1) != 0 : winding != 0;
 }
 
-/// Fills the row's cells and, when `hatches` is given, appends its hatches.
+/// Adds the row's solid cells and, when `hatches` is given, appends its hatches.
 void fill_row(FillRule rule, const GridSpec& grid, std::vector<ScanCrossing>::iterator begin,
-              std::vector<ScanCrossing>::iterator end, std::uint8_t* cells,
+              std::vector<ScanCrossing>::iterator end, SolidRows& cells,
               std::vector<HatchSegment>* hatches) {
   std::sort(begin, end, before);
   long long winding = 0;
@@ -250,7 +250,7 @@ void fill_row(FillRule rule, const GridSpec& grid, std::vector<ScanCrossing>::it
   for (auto it = begin; it != end; ++it) {
     const bool inside = is_inside(rule, winding, count);
     if (it->cells_left > from) {
-      if (inside) std::fill(cells + from, cells + it->cells_left, std::uint8_t{1});
+      if (inside) cells.add(it->row, from, it->cells_left);
       from = it->cells_left;
     }
     if (hatches != nullptr && inside && it->x > hatch_from) {
@@ -273,7 +273,7 @@ LayerFill fill_layer(const IndexedMesh& mesh, const ExactLayer& layer, const Gri
                      FillRule rule, double scan_offset_mm, bool want_hatches) {
   LayerFill out;
   out.layer = layer.layer;
-  out.solid.assign(grid.cells_per_layer(), 0);
+  out.solid = SolidRows(grid.nx, grid.ny);
   TieCounter ties;
   const auto row_y = [&](std::uint32_t j) { return grid.yc(j) + scan_offset_mm; };
   // Rows whose scanline lies at or below y (a point on the scanline counts as above it).
@@ -336,8 +336,7 @@ LayerFill fill_layer(const IndexedMesh& mesh, const ExactLayer& layer, const Gri
   for (auto begin = crossings.begin(); begin != crossings.end();) {
     auto end = begin;
     while (end != crossings.end() && end->row == begin->row) ++end;
-    fill_row(rule, grid, begin, end, out.solid.data() + std::size_t{begin->row} * grid.nx,
-             want_hatches ? &out.hatches : nullptr);
+    fill_row(rule, grid, begin, end, out.solid, want_hatches ? &out.hatches : nullptr);
     begin = end;
   }
   out.exact_fallbacks = ties.ties();

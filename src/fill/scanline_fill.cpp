@@ -25,10 +25,10 @@ bool inside(FillRule rule, long long winding, long long count) {
   return rule == FillRule::EvenOdd ? (count & 1) != 0 : winding != 0;
 }
 
-/// Fills the row's solid cells (when `cells` is given) and appends its hatches (when `hatches`
+/// Adds the row's solid cells (when `cells` is given) and appends its hatches (when `hatches`
 /// is given).
-void emit_row(FillRule rule, const GridSpec& grid, std::span<RowCrossing> row, std::uint8_t* cells,
-              std::vector<HatchSegment>* hatches) {
+void emit_row(FillRule rule, const GridSpec& grid, std::uint32_t j, std::span<RowCrossing> row,
+              SolidRows* cells, std::vector<HatchSegment>* hatches) {
   long long winding = 0;
   long long count = 0;
   for (const auto& c : row) {
@@ -46,7 +46,7 @@ void emit_row(FillRule rule, const GridSpec& grid, std::span<RowCrossing> row, s
     std::uint32_t from = 0;
     for (const auto& c : row) {
       if (c.cells_left > from) {
-        if (inside(rule, w, n)) std::fill(cells + from, cells + c.cells_left, std::uint8_t{1});
+        if (inside(rule, w, n)) cells->add(j, from, c.cells_left);
         from = c.cells_left;
       }
       w -= c.weight;
@@ -176,14 +176,13 @@ LayerFill scanline_fill(const IndexedMesh& mesh, const LayerSegments& segments,
   const std::uint64_t fallbacks_before = detail::exact_fallback_counter();
   LayerFill out;
   out.layer = segments.layer;
-  if (wanted.cells) out.solid.assign(grid.cells_per_layer(), 0);
+  if (wanted.cells) out.solid = SolidRows(grid.nx, grid.ny);
   std::vector<RowCrossing> crossings = collect_crossings(
       mesh, segments, grid, rule == FillRule::EvenOdd, scan_offset_mm, wanted.cells);
   out.crossings = crossings.size();
 
   for_each_row(crossings, [&](std::uint32_t row, std::span<RowCrossing> in_row) {
-    emit_row(rule, grid, in_row,
-             wanted.cells ? out.solid.data() + std::size_t{row} * grid.nx : nullptr,
+    emit_row(rule, grid, row, in_row, wanted.cells ? &out.solid : nullptr,
              wanted.hatches ? &out.hatches : nullptr);
   });
   out.exact_fallbacks = detail::exact_fallback_counter() - fallbacks_before;

@@ -24,8 +24,8 @@ namespace strata {
 namespace {
 
 constexpr std::size_t kMaxOpenChainReports = 1000;
-// Memory the layers in flight may take (solid bitmaps and classes, one byte a cell each; two
-// batches: one being written while the next is computed).
+// Memory the layers in flight may take (their classes, one byte a cell, beside solid cells kept
+// as runs; two batches: one being written while the next is computed).
 constexpr double kBatchMemoryBytes = 2.0e9;
 
 /// "3, 4, 5" for the first few layers that `has` picks, "3, 4, 5, ..." when there are more.
@@ -175,12 +175,12 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
       std::clamp(kBatchMemoryBytes / (4.0 * layer_bytes), 1.0,
                  static_cast<double>(std::max(1, options.batch_layers))));
 
-  std::map<std::int64_t, LayerGeometry> pending;             // computed, not yet sent to the sinks
-  std::map<std::int64_t, std::vector<std::uint8_t>> solids;  // the shell window
-  const SolidLayerLookup lookup = [&](std::int64_t q) -> const std::uint8_t* {
+  std::map<std::int64_t, LayerGeometry> pending;  // computed, not yet sent to the sinks
+  std::map<std::int64_t, SolidRows> solids;       // the shell window
+  const SolidLayerLookup lookup = [&](std::int64_t q) -> const SolidRows* {
     if (q < 0 || q >= static_cast<std::int64_t>(grid.nz)) return nullptr;
     const auto it = solids.find(q);
-    return it == solids.end() ? nullptr : it->second.data();
+    return it == solids.end() ? nullptr : &it->second;
   };
 
   // Writes layers [from, to), classified and prepared in `layers`, in order.

@@ -247,10 +247,10 @@ const LayerAnalysis& SliceComparison::State::analyse(std::uint32_t k) {
       options.fill_rule == FillRule::EvenOdd ? FillRule::NonZero : FillRule::EvenOdd;
   a.solid_rule = scanline_fill(mesh, a.segments, grid, options.fill_rule, options.scan_offset_mm,
                                {.cells = true, .hatches = false})
-                     .solid;
+                     .solid.cells();
   a.solid_other = scanline_fill(mesh, a.segments, grid, other, options.scan_offset_mm,
                                 {.cells = true, .hatches = false})
-                      .solid;
+                      .solid.cells();
   analysis = std::move(a);
   return *analysis;
 }

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <numeric>
@@ -143,65 +144,69 @@ bool slab_footprint(const Vec3& a, const Vec3& b, const Vec3& c, double z_lo, do
   return any;
 }
 
+/// The runs of both a and b, into `out` (cleared first).
+void intersect_runs(std::span<const SolidRun> a, std::span<const SolidRun> b,
+                    std::vector<SolidRun>& out) {
+  out.clear();
+  std::size_t p = 0, q = 0;
+  while (p < a.size() && q < b.size()) {
+    const std::uint32_t lo = std::max(a[p].begin, b[q].begin);
+    const std::uint32_t hi = std::min(a[p].end, b[q].end);
+    if (lo < hi) out.push_back({lo, hi});
+    if (a[p].end < b[q].end) {
+      ++p;
+    } else {
+      ++q;
+    }
+  }
+}
+
+/// Sets `count` cells from `at` to `code`.
+void set_cells(CellClass* at, std::size_t count, CellClass code) {
+  std::memset(at, static_cast<int>(code), count);
+}
+
 /// The first ring of a layer: every solid cell is Interior, or Boundary when one of its
-/// 6-neighbours is empty (outside the grid counts as empty; a missing layer is outside); the
-/// other cells must be Empty already (some are written Empty again).
-/// Row by row: on the grid's border rows and columns, and when a layer beside is missing, every
+/// 6-neighbours is empty (outside the grid counts as empty; a missing layer is outside); every
+/// other cell Empty. Each of the nx * ny cells of `out` is written.
+/// Row by row, on runs: a cell is Interior when it lies in a run of its row shrunk by one at
+/// either end (both row neighbours solid) and in the runs of the rows beside it and of the same
+/// row in the layers beside. On the grid's border rows, and when a layer beside is missing, every
 /// solid cell touches the outside.
-void first_ring(const std::uint8_t* here, const std::uint8_t* below, const std::uint8_t* above,
-                std::uint32_t nx, std::uint32_t ny, CellClass* out) {
+void first_ring(const SolidRows& here, const SolidRows* below, const SolidRows* above,
+                CellClass* out) {
+  const std::uint32_t nx = here.nx();
+  const std::uint32_t ny = here.ny();
+  std::vector<SolidRun> inner, scratch;
   for (std::uint32_t j = 0; j < ny; ++j) {
-    const std::size_t row = std::size_t{j} * nx;
-    const std::uint8_t* h = here + row;
-    CellClass* o = out + row;
-    if (j == 0 || j + 1 == ny || below == nullptr || above == nullptr) {
-      for (std::uint32_t i = 0; i < nx; ++i) {
-        if (h[i]) o[i] = CellClass::Boundary;
+    const auto runs = here.row(j);
+    CellClass* o = out + std::size_t{j} * nx;
+    inner.clear();
+    if (!runs.empty() && j != 0 && j + 1 != ny && below != nullptr && above != nullptr) {
+      for (const SolidRun& r : runs) {
+        if (r.end - r.begin > 2) inner.push_back({r.begin + 1, r.end - 1});
       }
-      continue;
+      for (const auto side : {here.row(j - 1), here.row(j + 1), below->row(j), above->row(j)}) {
+        if (inner.empty()) break;
+        intersect_runs(inner, side, scratch);
+        std::swap(inner, scratch);
+      }
     }
-    const std::uint8_t* north = h + nx;
-    const std::uint8_t* south = h - nx;
-    const std::uint8_t* down = below + row;
-    const std::uint8_t* up = above + row;
-    if (h[0]) o[0] = CellClass::Boundary;
-    if (nx > 1 && h[nx - 1]) o[nx - 1] = CellClass::Boundary;
-    std::uint32_t i = 1;
-#if defined(__SSE2__)
-    // Sixteen cells a step: a byte compare with zero for each neighbour, their masks joined.
-    static_assert(static_cast<int>(CellClass::Empty) == 0 &&
-                  static_cast<int>(CellClass::Interior) == 1 &&
-                  static_cast<int>(CellClass::Boundary) == 3);
-    const __m128i zero = _mm_setzero_si128();
-    const __m128i one = _mm_set1_epi8(1);
-    const __m128i two = _mm_set1_epi8(2);
-    const auto is_empty = [&](const std::uint8_t* at) {
-      return _mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(at)), zero);
-    };
-    for (; i + 17 <= nx; i += 16) {
-      // Sixteen empty cells stay as they are (outside the part: most of a layer's blocks).
-      const __m128i empty_here = is_empty(h + i);
-      if (_mm_movemask_epi8(empty_here) == 0xFFFF) continue;
-      const __m128i open =
-          _mm_or_si128(_mm_or_si128(_mm_or_si128(is_empty(h + i - 1), is_empty(h + i + 1)),
-                                    _mm_or_si128(is_empty(north + i), is_empty(south + i))),
-                       _mm_or_si128(is_empty(down + i), is_empty(up + i)));
-      // Solid: Interior (1), or Boundary (3) when a neighbour is empty; empty cells stay 0.
-      const __m128i code =
-          _mm_andnot_si128(empty_here, _mm_or_si128(one, _mm_and_si128(open, two)));
-      _mm_storeu_si128(reinterpret_cast<__m128i*>(o + i), code);
+    // Each inner run lies within one run of the row.
+    std::uint32_t at = 0;
+    std::size_t q = 0;
+    for (const SolidRun& r : runs) {
+      set_cells(o + at, r.begin - at, CellClass::Empty);
+      at = r.begin;
+      for (; q < inner.size() && inner[q].begin < r.end; ++q) {
+        set_cells(o + at, inner[q].begin - at, CellClass::Boundary);
+        set_cells(o + inner[q].begin, inner[q].end - inner[q].begin, CellClass::Interior);
+        at = inner[q].end;
+      }
+      set_cells(o + at, r.end - at, CellClass::Boundary);
+      at = r.end;
     }
-#endif
-    // Without a branch, so that the compiler can take many cells a step.
-    for (; i + 1 < nx; ++i) {
-      const bool solid = h[i] != 0;
-      const bool enclosed = (h[i - 1] != 0) & (h[i + 1] != 0) & (north[i] != 0) & (south[i] != 0) &
-                            (down[i] != 0) & (up[i] != 0);
-      const std::uint8_t empty = static_cast<std::uint8_t>(CellClass::Empty);
-      const std::uint8_t interior = static_cast<std::uint8_t>(CellClass::Interior);
-      const std::uint8_t boundary = static_cast<std::uint8_t>(CellClass::Boundary);
-      o[i] = static_cast<CellClass>(solid ? (enclosed ? interior : boundary) : empty);
-    }
+    set_cells(o + at, nx - at, CellClass::Empty);
   }
 }
 
@@ -551,14 +556,14 @@ std::uint32_t BoundaryShell::reach_layers(const GridSpec& grid, ShellMode mode,
 
 void BoundaryShell::classify(std::uint32_t k, const SolidLayerLookup& solid,
                              std::vector<CellClass>& out) const {
-  const std::uint32_t nx = grid_.nx;
-  const std::uint32_t ny = grid_.ny;
-  const std::uint8_t* here = solid(k);
-  const std::uint8_t* below = solid(static_cast<std::int64_t>(k) - 1);
-  const std::uint8_t* above = solid(static_cast<std::int64_t>(k) + 1);
-  out.assign(grid_.cells_per_layer(), CellClass::Empty);
+  const SolidRows* here = solid(k);
+  STRATA_ASSERT(here != nullptr && here->nx() == grid_.nx && here->ny() == grid_.ny,
+                "the layer classified has its solid cells");
+  // Written whole by the first ring.
+  out.resize(grid_.cells_per_layer());
   // Solid cells, and the first ring: a solid cell with an empty 6-neighbour.
-  first_ring(here, below, above, nx, ny, out.data());
+  first_ring(*here, solid(static_cast<std::int64_t>(k) - 1),
+             solid(static_cast<std::int64_t>(k) + 1), out.data());
   if (mode_ == ShellMode::Distance) {
     mark_near_surface(k, out);
   } else if (rings_ > 1) {
@@ -985,23 +990,37 @@ void BoundaryShell::mark_rings(std::uint32_t k, const SolidLayerLookup& solid,
   const std::uint32_t ny = grid_.ny;
   const std::size_t cells = grid_.cells_per_layer();
   const auto cap = static_cast<std::uint16_t>(n + 1);
-  std::vector<std::uint16_t> distance(cells);
+  std::vector<std::uint16_t> distance(cells, 0);
   std::uint16_t* dist = distance.data();
   // Along z: 0 on an empty cell, else the nearest layer within n where the column is empty (a
   // layer beyond the grid is empty throughout).
-  const std::uint8_t* here = solid(k);
-  for (std::size_t c = 0; c < cells; ++c) dist[c] = here[c] != 0 ? cap : 0;
+  const SolidRows& here = *solid(k);
+  for (std::uint32_t j = 0; j < ny; ++j) {
+    std::uint16_t* row = dist + std::size_t{j} * nx;
+    for (const SolidRun& r : here.row(j)) std::fill(row + r.begin, row + r.end, cap);
+  }
+  std::vector<SolidRun> closed;
   for (std::uint32_t d = 1; d <= n; ++d) {
-    const std::uint8_t* below = solid(static_cast<std::int64_t>(k) - d);
-    const std::uint8_t* above = solid(static_cast<std::int64_t>(k) + d);
+    const SolidRows* below = solid(static_cast<std::int64_t>(k) - d);
+    const SolidRows* above = solid(static_cast<std::int64_t>(k) + d);
     const auto step = static_cast<std::uint16_t>(d);
     if (below == nullptr || above == nullptr) {
       for (std::size_t c = 0; c < cells; ++c) dist[c] = std::min(dist[c], step);
       break;  // nothing farther is nearer
     }
-    for (std::size_t c = 0; c < cells; ++c) {
-      const bool open = (below[c] == 0) | (above[c] == 0);
-      dist[c] = std::min(dist[c], open ? step : cap);
+    // Open where either layer is empty: between the runs solid in both.
+    for (std::uint32_t j = 0; j < ny; ++j) {
+      std::uint16_t* row = dist + std::size_t{j} * nx;
+      intersect_runs(below->row(j), above->row(j), closed);
+      std::uint32_t at = 0;
+      const auto open_until = [&](std::uint32_t end) {
+        for (; at < end; ++at) row[at] = std::min(row[at], step);
+      };
+      for (const SolidRun& r : closed) {
+        open_until(r.begin);
+        at = r.end;
+      }
+      open_until(nx);
     }
   }
   // Along each row, both ways; the cells beyond either end are empty.

@@ -64,14 +64,14 @@ LayerGeometry WindingKernel::compute_layer(std::uint32_t k) const {
 
   LayerGeometry geometry;
   geometry.fill.layer = k;
-  geometry.fill.solid.assign(grid_.cells_per_layer(), 0);
+  std::vector<std::uint8_t> solid(grid_.cells_per_layer(), 0);
   std::uint64_t guarded = 0;
   for (std::uint32_t j = 0; j < grid_.ny; ++j) {
     const std::size_t row = std::size_t{j} * grid_.nx;
     for (std::uint32_t i = 0; i < grid_.nx; ++i) {
       const std::int32_t n = integer[row + i];
       if (cap_tree_.empty()) {
-        geometry.fill.solid[row + i] = n >= 1 ? 1 : 0;
+        solid[row + i] = n >= 1 ? 1 : 0;
         continue;
       }
       const Vec3 q{grid_.xc(i), grid_.yc(j) + options_.scan_offset_mm, grid_.zk(k)};
@@ -81,11 +81,12 @@ LayerGeometry WindingKernel::compute_layer(std::uint32_t k) const {
                                                                : cap_tree_.evaluate(q, kGuardBeta));
         ++guarded;
       }
-      geometry.fill.solid[row + i] = w >= 0.5 ? 1 : 0;
+      solid[row + i] = w >= 0.5 ? 1 : 0;
     }
   }
   guard_evaluations_ += guarded;
-  geometry.fill.hatches = hatches_from_cells(geometry.fill.solid, grid_);
+  geometry.fill.hatches = hatches_from_cells(solid, grid_);
+  geometry.fill.solid = SolidRows::from_cells(solid, grid_.nx, grid_.ny);
 
   // The contours are the mesh's own: the caps only serve the inside test.
   LayerSegments own{closed.layer, closed.z_mm, {}};

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "strata/fill/solid_rows.hpp"
 #include "strata/mesh/indexed_mesh.hpp"
 #include "strata/slice/grid_spec.hpp"
 #include "strata/slice/layer_segments.hpp"
@@ -26,9 +27,9 @@ struct FillWanted {
 /// The solid cells of one layer and its hatches.
 struct LayerFill {
   std::uint32_t layer = 0;
-  /// nx * ny bytes, row-major (index j * nx + i): 1 when the cell centre is inside; empty when
-  /// the cells were not wanted.
-  std::vector<std::uint8_t> solid;
+  /// The cells whose centre is inside, as runs along the rows; no rows when the cells were not
+  /// wanted.
+  SolidRows solid;
   std::vector<HatchSegment> hatches;
   /// Crossings counted in this layer (for the report).
   std::uint64_t crossings = 0;

@@ -10,7 +10,7 @@ namespace strata {
 
 /// What a slicing kernel computes for one layer, before the shell step.
 struct LayerGeometry {
-  LayerFill fill;  ///< solid bitmap and hatches
+  LayerFill fill;  ///< solid cells and hatches
   LayerContours contours;
   std::uint32_t segments = 0;
 };
@@ -25,11 +25,11 @@ class LayerKernel {
   virtual ~LayerKernel() = default;
   /// Prepares the layers [k0, k1) (e.g. groups the facets that cross them); one thread.
   virtual void prepare_batch(std::uint32_t k0, std::uint32_t k1) = 0;
-  /// Contours, segments and the solid bitmap of layer k of the prepared batch; thread-safe.
+  /// Contours, segments and the solid cells of layer k of the prepared batch; thread-safe.
   virtual LayerGeometry compute_layer(std::uint32_t k) const = 0;
   /// Says, before the first batch of a run, whether its cells are wanted: when not (the outputs
-  /// hold contours and hatches only) a kernel may leave LayerGeometry::fill.solid empty and skip
-  /// deciding cells.
+  /// hold contours and hatches only) a kernel may leave LayerGeometry::fill.solid without rows
+  /// and skip deciding cells.
   virtual void want_cells(bool /*wanted*/) {}
   /// Says, before the first batch of a run, whether its hatches are wanted: when not (no output
   /// holds them) a kernel may leave LayerGeometry::fill.hatches empty and skip what only they

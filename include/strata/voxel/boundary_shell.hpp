@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "strata/fill/solid_rows.hpp"
 #include "strata/mesh/indexed_mesh.hpp"
 #include "strata/slice/grid_spec.hpp"
 #include "strata/slice/slice_options.hpp"
@@ -16,10 +17,9 @@
 
 namespace strata {
 
-/// Returns the solid bitmap (nx * ny bytes) of layer k, or nullptr when k lies outside the grid
-/// (outside counts as empty). Layers within reach_layers() of the one being classified must be
-/// available.
-using SolidLayerLookup = std::function<const std::uint8_t*(std::int64_t k)>;
+/// Returns the solid cells of layer k (nx by ny), or nullptr when k lies outside the grid (outside
+/// counts as empty). Layers within reach_layers() of the one being classified must be available.
+using SolidLayerLookup = std::function<const SolidRows*(std::int64_t k)>;
 
 /// Marks the boundary shell (SPEC §2). A solid cell is Boundary when one of its 6-neighbours is
 /// empty, or when it lies in the surface layer of thickness t:

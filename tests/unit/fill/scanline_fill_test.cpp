@@ -23,9 +23,7 @@ GridSpec unit_grid(std::uint32_t n) {
   return g;
 }
 
-int count_solid(const LayerFill& fill) {
-  return static_cast<int>(std::count(fill.solid.begin(), fill.solid.end(), 1));
-}
+int count_solid(const LayerFill& fill) { return static_cast<int>(fill.solid.count()); }
 
 TEST(ScanlineFill, BoxAlignedWithGridFillsItsCells) {
   const IndexedMesh box = test::indexed_box_lo_hi_diagonals({1, 1, 1}, {4, 3, 5});
@@ -38,7 +36,7 @@ TEST(ScanlineFill, BoxAlignedWithGridFillsItsCells) {
       for (std::uint32_t j = 0; j < 6; ++j) {
         for (std::uint32_t i = 0; i < 6; ++i) {
           const bool expected = i >= 1 && i < 4 && j >= 1 && j < 3;
-          EXPECT_EQ(fill.solid[j * 6 + i], expected ? 1 : 0) << i << "," << j;
+          EXPECT_EQ(fill.solid.cells()[j * 6 + i], expected ? 1 : 0) << i << "," << j;
         }
       }
     }
@@ -51,9 +49,9 @@ TEST(ScanlineFill, WallThroughCellCentreTakesMaterialOnPlusXSide) {
   const LayerFill fill = fill_layer(box, unit_grid(5), 0);
   // Column 1's centre lies on the left wall: material is on its +x side, so it is solid; column
   // 3's centre lies on the right wall with empty space on +x, so it is empty.
-  EXPECT_EQ(fill.solid[1], 1);
-  EXPECT_EQ(fill.solid[2], 1);
-  EXPECT_EQ(fill.solid[3], 0);
+  EXPECT_EQ(fill.solid.cells()[1], 1);
+  EXPECT_EQ(fill.solid.cells()[2], 1);
+  EXPECT_EQ(fill.solid.cells()[3], 0);
 }
 
 TEST(ScanlineFill, FaceOnScanlineTakesMaterialBelowInY) {
@@ -62,10 +60,10 @@ TEST(ScanlineFill, FaceOnScanlineTakesMaterialBelowInY) {
   const LayerFill fill = fill_layer(box, unit_grid(4), 0);
   // A point on the line counts as above: row 0 (on the lower face) is empty, row 2 (on the
   // upper face) takes the material below it.
-  EXPECT_EQ(fill.solid[0 * 4 + 0], 0);
-  EXPECT_EQ(fill.solid[1 * 4 + 0], 1);
-  EXPECT_EQ(fill.solid[2 * 4 + 0], 1);
-  EXPECT_EQ(fill.solid[3 * 4 + 0], 0);
+  EXPECT_EQ(fill.solid.cells()[0 * 4 + 0], 0);
+  EXPECT_EQ(fill.solid.cells()[1 * 4 + 0], 1);
+  EXPECT_EQ(fill.solid.cells()[2 * 4 + 0], 1);
+  EXPECT_EQ(fill.solid.cells()[3 * 4 + 0], 0);
 }
 
 TEST(ScanlineFill, OverlappingBoxesDifferBetweenNonZeroAndEvenOdd) {
@@ -74,12 +72,12 @@ TEST(ScanlineFill, OverlappingBoxesDifferBetweenNonZeroAndEvenOdd) {
   const GridSpec grid = unit_grid(4);
   const LayerFill nonzero = fill_layer(two, grid, 0, FillRule::NonZero);
   const LayerFill evenodd = fill_layer(two, grid, 0, FillRule::EvenOdd);
-  EXPECT_EQ(
-      (std::vector<int>{nonzero.solid[0], nonzero.solid[1], nonzero.solid[2], nonzero.solid[3]}),
-      (std::vector<int>{1, 1, 1, 1}));
-  EXPECT_EQ(
-      (std::vector<int>{evenodd.solid[0], evenodd.solid[1], evenodd.solid[2], evenodd.solid[3]}),
-      (std::vector<int>{1, 0, 0, 1}));
+  const auto first_row = [](const LayerFill& fill) {
+    const std::vector<std::uint8_t> cells = fill.solid.cells();
+    return std::vector<int>(cells.begin(), cells.begin() + 4);
+  };
+  EXPECT_EQ(first_row(nonzero), (std::vector<int>{1, 1, 1, 1}));
+  EXPECT_EQ(first_row(evenodd), (std::vector<int>{1, 0, 0, 1}));
 }
 
 TEST(ScanlineFill, HatchesCoverTheSolidSpanOfEachRow) {
@@ -95,8 +93,8 @@ TEST(ScanlineFill, ScanOffsetMovesTheRowOffAFace) {
   const IndexedMesh box = test::indexed_box_lo_hi_diagonals({0, 0.5, 0}, {1, 2.5, 1});
   const LayerFill fill = fill_layer(box, unit_grid(4), 0, FillRule::NonZero, 0.0001);
   // Shifted up by 0.1 um, row 0's scanline is inside the box and row 2's is above it.
-  EXPECT_EQ(fill.solid[0 * 4 + 0], 1);
-  EXPECT_EQ(fill.solid[2 * 4 + 0], 0);
+  EXPECT_EQ(fill.solid.cells()[0 * 4 + 0], 1);
+  EXPECT_EQ(fill.solid.cells()[2 * 4 + 0], 0);
 }
 
 TEST(ScanlineFill, HatchesAloneAreTheHatchesOfAFullFillAndDecideNoCell) {
@@ -121,7 +119,7 @@ TEST(ScanlineFill, HatchesAloneAreTheHatchesOfAFullFillAndDecideNoCell) {
               fill_layer(*c.mesh, c.grid, k, rule, offset, {.cells = false, .hatches = true});
           const LayerFill cells =
               fill_layer(*c.mesh, c.grid, k, rule, offset, {.cells = true, .hatches = false});
-          EXPECT_TRUE(hatches.solid.empty());
+          EXPECT_FALSE(hatches.solid.has_rows());
           EXPECT_TRUE(cells.hatches.empty());
           EXPECT_EQ(cells.solid, full.solid) << "layer " << k;
           EXPECT_EQ(hatches.crossings, full.crossings) << "layer " << k;

@@ -113,7 +113,8 @@ class RecordingKernel final : public LayerKernel {
     ++computed[k];
     LayerGeometry g;
     g.fill.layer = k;
-    g.fill.solid.assign(grid_.cells_per_layer(), 1);
+    g.fill.solid = SolidRows(grid_.nx, grid_.ny);
+    for (std::uint32_t j = 0; j < grid_.ny; ++j) g.fill.solid.add(j, 0, grid_.nx);
     return g;
   }
 

@@ -33,7 +33,7 @@ class FailingKernel final : public LayerKernel {
     }
     LayerGeometry g;
     g.fill.layer = k;
-    g.fill.solid.assign(grid_.cells_per_layer(), 0);
+    g.fill.solid = SolidRows(grid_.nx, grid_.ny);
     return g;
   }
   std::string_view name() const override { return "test kernel"; }
@@ -73,7 +73,7 @@ class ScriptedKernel final : public LayerKernel {
     ++computed;
     LayerGeometry g;
     g.fill.layer = k;
-    g.fill.solid.assign(grid_.cells_per_layer(), 0);
+    g.fill.solid = SolidRows(grid_.nx, grid_.ny);
     g.contours = contours_of_(k);
     return g;
   }

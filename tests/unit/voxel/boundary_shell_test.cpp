@@ -275,8 +275,10 @@ TEST(BoundaryShell, RingsAreTheirDefinitionCellForCell) {
     }
     const std::uint32_t deepest = *std::max_element(ring.begin(), ring.end());
     ASSERT_GE(deepest, 5u) << "seed " << seed << ": the balls must leave a deep inside";
-    const SolidLayerLookup solid = [&](std::int64_t k) -> const std::uint8_t* {
-      return k >= 0 && k < nz ? layers[static_cast<std::size_t>(k)].data() : nullptr;
+    std::vector<SolidRows> rows;
+    for (const auto& layer : layers) rows.push_back(SolidRows::from_cells(layer, nx, ny));
+    const SolidLayerLookup solid = [&](std::int64_t k) -> const SolidRows* {
+      return k >= 0 && k < nz ? &rows[static_cast<std::size_t>(k)] : nullptr;
     };
     for (const std::uint32_t n : {1u, 2u, 3u, 4u, 7u, 255u}) {
       // t = n + 0.5 cells gives n rings (int(t / d)); 255 is the most there are.
