@@ -12,10 +12,6 @@
 #include <optional>
 #include <string>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include "strata/core/internal_failure.hpp"
 #include "strata/voxel/boundary_shell.hpp"
 
@@ -79,53 +75,6 @@ struct ClassifiedLayer {
   std::uint64_t boundary = 0;
   std::vector<std::unique_ptr<PreparedLayer>> prepared;  ///< by sink
 };
-
-void count_classes(ClassifiedLayer& layer) {
-  const auto* codes = reinterpret_cast<const std::uint8_t*>(layer.cells.data());
-  const std::size_t n = layer.cells.size();
-  const auto interior_code = static_cast<std::uint8_t>(CellClass::Interior);
-  const auto boundary_code = static_cast<std::uint8_t>(CellClass::Boundary);
-  std::uint64_t interior = 0, boundary = 0;
-  std::size_t at = 0;
-#if defined(__SSE2__)
-  // Sixteen byte-wide counts, each raised by a compare's -1 for at most 255 steps of sixteen
-  // cells, then summed by psadbw.
-  const __m128i want_interior = _mm_set1_epi8(static_cast<char>(interior_code));
-  const __m128i want_boundary = _mm_set1_epi8(static_cast<char>(boundary_code));
-  const auto sum_bytes = [](__m128i counts) {
-    const __m128i halves = _mm_sad_epu8(counts, _mm_setzero_si128());
-    return static_cast<std::uint64_t>(_mm_cvtsi128_si64(halves)) +
-           static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm_unpackhi_epi64(halves, halves)));
-  };
-  while (n - at >= 16) {
-    const std::size_t steps = std::min<std::size_t>((n - at) / 16, 255);
-    __m128i run_interior = _mm_setzero_si128();
-    __m128i run_boundary = _mm_setzero_si128();
-    for (std::size_t step = 0; step < steps; ++step, at += 16) {
-      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(codes + at));
-      run_interior = _mm_sub_epi8(run_interior, _mm_cmpeq_epi8(v, want_interior));
-      run_boundary = _mm_sub_epi8(run_boundary, _mm_cmpeq_epi8(v, want_boundary));
-    }
-    interior += sum_bytes(run_interior);
-    boundary += sum_bytes(run_boundary);
-  }
-#endif
-  // The rest (every cell without SSE2) on byte-wide sums over runs of 255 cells, which the
-  // compiler takes many cells a step, then added up.
-  constexpr std::size_t kRun = 255;
-  for (; at < n; at += kRun) {
-    const std::size_t end = std::min(n, at + kRun);
-    std::uint8_t run_interior = 0, run_boundary = 0;
-    for (std::size_t c = at; c < end; ++c) {
-      run_interior += codes[c] == interior_code ? 1 : 0;
-      run_boundary += codes[c] == boundary_code ? 1 : 0;
-    }
-    interior += run_interior;
-    boundary += run_boundary;
-  }
-  layer.interior = interior;
-  layer.boundary = boundary;
-}
 
 Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
                                 const SliceOptions& options, LayerKernel& kernel,
@@ -296,8 +245,9 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
       tbb::parallel_for(class_from, class_to, [&](std::uint32_t k) {
         ClassifiedLayer& done = classifying[k - class_from];
         if (classify) {
-          shell->classify(k, lookup, done.cells);
-          count_classes(done);
+          const BoundaryShell::ClassCounts counts = shell->classify(k, lookup, done.cells);
+          done.interior = counts.interior;
+          done.boundary = counts.boundary;
         }
         const LayerGeometry& g = *classifying_geometry[k - class_from];
         const LayerResult result{k, grid.zk(k), done.cells, g.contours, g.fill.hatches};

@@ -168,16 +168,17 @@ void set_cells(CellClass* at, std::size_t count, CellClass code) {
 
 /// The first ring of a layer: every solid cell is Interior, or Boundary when one of its
 /// 6-neighbours is empty (outside the grid counts as empty; a missing layer is outside); every
-/// other cell Empty. Each of the nx * ny cells of `out` is written.
+/// other cell Empty. Each of the nx * ny cells of `out` is written; returns the Boundary cells.
 /// Row by row, on runs: a cell is Interior when it lies in a run of its row shrunk by one at
 /// either end (both row neighbours solid) and in the runs of the rows beside it and of the same
 /// row in the layers beside. On the grid's border rows, and when a layer beside is missing, every
 /// solid cell touches the outside.
-void first_ring(const SolidRows& here, const SolidRows* below, const SolidRows* above,
-                CellClass* out) {
+std::uint64_t first_ring(const SolidRows& here, const SolidRows* below, const SolidRows* above,
+                         CellClass* out) {
   const std::uint32_t nx = here.nx();
   const std::uint32_t ny = here.ny();
   std::vector<SolidRun> inner, scratch;
+  std::uint64_t boundary = 0;
   for (std::uint32_t j = 0; j < ny; ++j) {
     const auto runs = here.row(j);
     CellClass* o = out + std::size_t{j} * nx;
@@ -201,13 +202,16 @@ void first_ring(const SolidRows& here, const SolidRows* below, const SolidRows* 
       for (; q < inner.size() && inner[q].begin < r.end; ++q) {
         set_cells(o + at, inner[q].begin - at, CellClass::Boundary);
         set_cells(o + inner[q].begin, inner[q].end - inner[q].begin, CellClass::Interior);
+        boundary += inner[q].begin - at;
         at = inner[q].end;
       }
       set_cells(o + at, r.end - at, CellClass::Boundary);
+      boundary += r.end - at;
       at = r.end;
     }
     set_cells(o + at, nx - at, CellClass::Empty);
   }
+  return boundary;
 }
 
 /// A facet's box in the frame of its patch's slab (n, u, v), [lo[a], hi[a]] along each axis a,
@@ -554,26 +558,28 @@ std::uint32_t BoundaryShell::reach_layers(const GridSpec& grid, ShellMode mode,
   return static_cast<std::uint32_t>(std::clamp(n, 1.0, 255.0));
 }
 
-void BoundaryShell::classify(std::uint32_t k, const SolidLayerLookup& solid,
-                             std::vector<CellClass>& out) const {
+BoundaryShell::ClassCounts BoundaryShell::classify(std::uint32_t k, const SolidLayerLookup& solid,
+                                                   std::vector<CellClass>& out) const {
   const SolidRows* here = solid(k);
   STRATA_ASSERT(here != nullptr && here->nx() == grid_.nx && here->ny() == grid_.ny,
                 "the layer classified has its solid cells");
   // Written whole by the first ring.
   out.resize(grid_.cells_per_layer());
   // Solid cells, and the first ring: a solid cell with an empty 6-neighbour.
-  first_ring(*here, solid(static_cast<std::int64_t>(k) - 1),
-             solid(static_cast<std::int64_t>(k) + 1), out.data());
+  std::uint64_t boundary = first_ring(*here, solid(static_cast<std::int64_t>(k) - 1),
+                                      solid(static_cast<std::int64_t>(k) + 1), out.data());
   if (mode_ == ShellMode::Distance) {
-    mark_near_surface(k, out);
+    boundary += mark_near_surface(k, out);
   } else if (rings_ > 1) {
-    mark_rings(k, solid, out);
+    boundary += mark_rings(k, solid, out);
   }
+  return {here->count() - boundary, boundary};
 }
 
-void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& out) const {
+std::uint64_t BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& out) const {
   const double t = thickness_mm_;
-  if (!(t > 0.0) || patches_.empty()) return;
+  if (!(t > 0.0) || patches_.empty()) return 0;
+  std::uint64_t marked = 0;
   const double z = grid_.zk(k);
   // Facets whose z-range meets [z - t, z + t]; the slab is widened a little so that rounding in
   // these double bounds can only add candidates, never drop one (the predicate decides).
@@ -604,7 +610,7 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
       std::uint64_t interior[kMaxPatchRows];
       gather_interior(out, ti0, ti1, tj0, rows, interior);
       if (std::any_of(interior, interior + rows, [](std::uint64_t w) { return w != 0; })) {
-        mark_near_vertices(vertices, z, ti0, ti1, tj0, rows, interior, out);
+        marked += mark_near_vertices(vertices, z, ti0, ti1, tj0, rows, interior, out);
       }
     };
     for_each_tile(pi0, pi1, pj0, pj1, mark_tile);
@@ -685,21 +691,23 @@ void BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& o
         gathered = gathered && candidates.hold(small.back());
         continue;
       }
-      mark_near_wide_facet(a, b, c, z, box, grow, i0_box, i1_box, j0, j1, out);
+      marked += mark_near_wide_facet(a, b, c, z, box, grow, i0_box, i1_box, j0, j1, out);
       // The candidates no longer show the cells it marked.
       gathered = false;
     }
     if (small.empty()) continue;
     if (gathered) {
-      test_candidates(small, patch.slab, candidates, z, out);
+      marked += test_candidates(small, patch.slab, candidates, z, out);
     } else {
-      mark_near_small_facets(small, patch.slab, z, out);
+      marked += mark_near_small_facets(small, patch.slab, z, out);
     }
   }
+  return marked;
 }
 
-void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, const Slab& slab,
-                                           double z, std::vector<CellClass>& out) const {
+std::uint64_t BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets,
+                                                    const Slab& slab, double z,
+                                                    std::vector<CellClass>& out) const {
   std::int64_t pi0 = facets[0].i0, pi1 = facets[0].i1, pj0 = facets[0].j0, pj1 = facets[0].j1;
   for (const FacetReach& m : facets) {
     pi0 = std::min(pi0, m.i0);
@@ -710,6 +718,7 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
   // A tile of words at a time, each facet over the part of its box in the tile.
   Candidates candidates;
   std::vector<FacetReach> in_tile;
+  std::uint64_t marked = 0;
   const auto test_tile = [&](std::int64_t ti0, std::int64_t ti1, std::int64_t tj0,
                              std::int64_t rows) {
     gather_candidates(ti0, ti1, tj0, rows, slab, z, out, candidates);
@@ -724,9 +733,10 @@ void BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets, c
                          std::max(f.j0, tj0),
                          std::min(f.j1, tj1)});
     }
-    test_candidates(in_tile, slab, candidates, z, out);
+    marked += test_candidates(in_tile, slab, candidates, z, out);
   };
   for_each_tile(pi0, pi1, pj0, pj1, test_tile);
+  return marked;
 }
 
 void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::int64_t pj0,
@@ -815,9 +825,9 @@ std::size_t BoundaryShell::list_few_candidates(const Candidates& candidates, dou
   return count;
 }
 
-void BoundaryShell::test_candidates(std::span<const FacetReach> facets, const Slab& slab,
-                                    Candidates& candidates, double z,
-                                    std::vector<CellClass>& out) const {
+std::uint64_t BoundaryShell::test_candidates(std::span<const FacetReach> facets, const Slab& slab,
+                                             Candidates& candidates, double z,
+                                             std::vector<CellClass>& out) const {
   const std::uint32_t nx = grid_.nx;
   const std::int64_t pi0 = candidates.pi0;
   const std::int64_t pj0 = candidates.pj0;
@@ -828,6 +838,7 @@ void BoundaryShell::test_candidates(std::span<const FacetReach> facets, const Sl
   const double t2_far = far_squared();
   std::optional<detail::TriangleDistanceFilter> filter;
   FrameBox frame_box{};
+  std::uint64_t marked = 0;
   for (const FacetReach& facet : facets) {
     filter.reset();
     bool framed = false;
@@ -852,10 +863,12 @@ void BoundaryShell::test_candidates(std::span<const FacetReach> facets, const Sl
         if (facet_closer_than(filter, facet.corner, thickness_mm_, p)) {
           out[static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(i)] = CellClass::Boundary;
           interior[r] &= ~(std::uint64_t{1} << bit);
+          ++marked;
         }
       }
     }
   }
+  return marked;
 }
 
 void BoundaryShell::gather_interior(const std::vector<CellClass>& cells, std::int64_t pi0,
@@ -871,9 +884,11 @@ void BoundaryShell::gather_interior(const std::vector<CellClass>& cells, std::in
   }
 }
 
-void BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, double z, std::int64_t pi0,
-                                       std::int64_t pi1, std::int64_t pj0, std::int64_t rows,
-                                       std::uint64_t* interior, std::vector<CellClass>& out) const {
+std::uint64_t BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, double z,
+                                                std::int64_t pi0, std::int64_t pi1,
+                                                std::int64_t pj0, std::int64_t rows,
+                                                std::uint64_t* interior,
+                                                std::vector<CellClass>& out) const {
   const double t = thickness_mm_;
   const double t2 = t * t;
   const std::uint32_t nx = grid_.nx;
@@ -889,6 +904,7 @@ void BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, double z,
   const auto certainly_closer = [&](double dx, double dyz2) {
     return (dx * dx + dyz2) * (1.0 + 1e-12) < accept_below;
   };
+  std::uint64_t marked = 0;
   for (const Vec3& v : vertices) {
     const double dz = z - v.z;
     const double dz2 = dz * dz;
@@ -922,6 +938,7 @@ void BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, double z,
       }
       if (hits == 0) continue;
       interior[r] &= ~hits;
+      marked += static_cast<std::uint64_t>(std::popcount(hits));
       CellClass* row = out.data() + static_cast<std::size_t>(pj0 + r) * nx;
       while (hits != 0) {
         row[pi0 + std::countr_zero(hits)] = CellClass::Boundary;
@@ -929,12 +946,14 @@ void BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, double z,
       }
     }
   }
+  return marked;
 }
 
-void BoundaryShell::mark_near_wide_facet(const Vec3& a, const Vec3& b, const Vec3& c, double z,
-                                         const double box[4], double grow, std::int64_t i0_box,
-                                         std::int64_t i1_box, std::int64_t j0, std::int64_t j1,
-                                         std::vector<CellClass>& out) const {
+std::uint64_t BoundaryShell::mark_near_wide_facet(const Vec3& a, const Vec3& b, const Vec3& c,
+                                                  double z, const double box[4], double grow,
+                                                  std::int64_t i0_box, std::int64_t i1_box,
+                                                  std::int64_t j0, std::int64_t j1,
+                                                  std::vector<CellClass>& out) const {
   const double t = thickness_mm_;
   const std::uint32_t nx = grid_.nx;
   const detail::TriangleDistanceFilter filter(a, b, c, t);
@@ -942,6 +961,7 @@ void BoundaryShell::mark_near_wide_facet(const Vec3& a, const Vec3& b, const Vec
   detail::TriangleDistanceFilter::RowBound bounds[detail::TriangleDistanceFilter::kMaxRowBounds];
   const int bound_count =
       filter.row_bounds(z, box[1] - grow, box[3] + grow, box[0] - grow, box[2] + grow, bounds);
+  std::uint64_t marked = 0;
   for (std::int64_t j = j0; j <= j1; ++j) {
     const double yc = grid_.yc(static_cast<std::uint32_t>(j));
     double x_lo = box[0] - grow;
@@ -970,13 +990,17 @@ void BoundaryShell::mark_near_wide_facet(const Vec3& a, const Vec3& b, const Vec
       --last_closer;
     }
     for (std::int64_t i = first_closer; i <= last_closer; ++i) {
-      if (row[i] == CellClass::Interior) row[i] = CellClass::Boundary;
+      if (row[i] == CellClass::Interior) {
+        row[i] = CellClass::Boundary;
+        ++marked;
+      }
     }
   }
+  return marked;
 }
 
-void BoundaryShell::mark_rings(std::uint32_t k, const SolidLayerLookup& solid,
-                               std::vector<CellClass>& out) const {
+std::uint64_t BoundaryShell::mark_rings(std::uint32_t k, const SolidLayerLookup& solid,
+                                        std::vector<CellClass>& out) const {
   // A solid cell's ring is its count of 6-neighbour steps to the nearest empty cell (outside the
   // grid counts as empty): a shortest path through solid cells to the first ring and one step
   // out. The straight staircase toward the nearest empty cell is such a path, since each cell on
@@ -1055,9 +1079,14 @@ void BoundaryShell::mark_rings(std::uint32_t k, const SolidLayerLookup& solid,
   for (std::uint32_t j = ny - 1; j-- > 0;) {
     relax_row(dist + std::size_t{j} * nx, dist + std::size_t{j + 1} * nx);
   }
+  std::uint64_t marked = 0;
   for (std::size_t c = 0; c < cells; ++c) {
-    if (out[c] == CellClass::Interior && dist[c] <= n) out[c] = CellClass::Boundary;
+    if (out[c] == CellClass::Interior && dist[c] <= n) {
+      out[c] = CellClass::Boundary;
+      ++marked;
+    }
   }
+  return marked;
 }
 
 }  // namespace strata

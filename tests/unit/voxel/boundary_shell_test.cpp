@@ -78,6 +78,9 @@ std::size_t expect_shell_by_definition(const IndexedMesh& mesh, double cell, dou
   auto summary = slice_model(mesh, *grid, options, sinks);
   EXPECT_TRUE(summary.has_value());
   if (!summary) return 0;
+  // The counts the shell reports are its cells'.
+  EXPECT_EQ(summary->class_counts[1], sink.count(CellClass::Interior));
+  EXPECT_EQ(summary->class_counts[2], sink.count(CellClass::Boundary));
   const GridSpec& g = *grid;
   const auto solid = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
     if (i < 0 || j < 0 || k < 0 || i >= g.nx || j >= g.ny || k >= g.nz) return false;
@@ -287,7 +290,11 @@ TEST(BoundaryShell, RingsAreTheirDefinitionCellForCell) {
       std::size_t wrong = 0, beyond_first = 0;
       std::vector<CellClass> out;
       for (std::uint32_t k = 0; k < nz; ++k) {
-        shell.classify(k, solid, out);
+        const BoundaryShell::ClassCounts counts = shell.classify(k, solid, out);
+        EXPECT_EQ(counts.interior, static_cast<std::uint64_t>(
+                                       std::count(out.begin(), out.end(), CellClass::Interior)));
+        EXPECT_EQ(counts.boundary, static_cast<std::uint64_t>(
+                                       std::count(out.begin(), out.end(), CellClass::Boundary)));
         for (std::uint32_t j = 0; j < ny; ++j) {
           for (std::uint32_t i = 0; i < nx; ++i) {
             const std::uint32_t r = ring[index(i, j, k)];
