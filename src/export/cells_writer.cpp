@@ -68,11 +68,9 @@ class BinaryCellsWriter final : public detail::SingleFileSink {
     const std::span<const CellClass> cells = layer.cells;
     const std::size_t n = cells.size();
     if (std::string* memory = out.memory()) {
-      // Held in memory: packed straight into it, checked first so that a refused layer adds
-      // nothing.
-      const std::size_t bad = first_unstorable_cell(cells);
+      // Held in memory: packed straight into it (a refused layer adds nothing).
+      const std::size_t bad = append_checked_packed_cells(cells, *memory);
       if (bad < n) return reserved_code_error(layer.layer, bad, run().grid.nx, cells[bad]);
-      append_packed_cells(cells, *memory);
       return {};
     }
     std::string chunk;
@@ -80,12 +78,11 @@ class BinaryCellsWriter final : public detail::SingleFileSink {
     for (std::size_t base = 0; base < n; base += 4 * kChunkBytes) {
       const std::span<const CellClass> part =
           cells.subspan(base, std::min(4 * kChunkBytes, n - base));
-      const std::size_t bad = first_unstorable_cell(part);
+      chunk.clear();
+      const std::size_t bad = append_checked_packed_cells(part, chunk);
       if (bad < part.size()) {
         return reserved_code_error(layer.layer, base + bad, run().grid.nx, part[bad]);
       }
-      chunk.clear();
-      append_packed_cells(part, chunk);
       out.write(chunk);
     }
     return {};

@@ -56,6 +56,41 @@ void append_packed_cells(std::span<const CellClass> cells, std::string& out) {
   }
 }
 
+std::size_t append_checked_packed_cells(std::span<const CellClass> cells, std::string& out) {
+  if constexpr (!kLittleEndian) {
+    const std::size_t bad = first_unstorable_cell(cells);
+    if (bad == cells.size()) append_packed_cells(cells, out);
+    return bad;
+  }
+  const std::size_t n = cells.size();
+  const std::size_t start = out.size();
+  out.resize(start + (n + 3) / 4);
+  char* to = out.data() + start;
+  // Eight cells a word, checked as first_unstorable_cell checks them and packed as
+  // append_packed_cells packs them (two bytes, four cells each): the layer is read once.
+  constexpr std::uint64_t kHigh = 0xFCFCFCFCFCFCFCFCULL;
+  constexpr std::uint64_t kLow = 0x0101010101010101ULL;
+  constexpr std::uint64_t kCodes = 0x0303030303030303ULL;
+  std::uint64_t unstorable = 0;
+  const std::size_t words = n / 8;
+  for (std::size_t b = 0; b < words; ++b) {
+    const std::uint64_t w = load_double_word(cells.data() + 8 * b);
+    unstorable |= (w & kHigh) | ((w >> 1) & ~w & kLow);
+    const std::uint64_t codes = w & kCodes;
+    to[2 * b] = static_cast<char>(((codes & 0xFFFFFFFFU) * kPackMultiplier) >> 24);
+    to[2 * b + 1] = static_cast<char>(((codes >> 32) * kPackMultiplier) >> 24);
+  }
+  const std::span<const CellClass> rest = cells.subspan(8 * words);
+  if (unstorable != 0 || first_unstorable_cell(rest) < rest.size()) {
+    out.resize(start);
+    return first_unstorable_cell(cells);
+  }
+  // The last cells, fewer than eight, as append_packed_cells packs them.
+  out.resize(start + 2 * words);
+  append_packed_cells(rest, out);
+  return n;
+}
+
 std::size_t first_unstorable_cell(std::span<const CellClass> cells) {
   const auto storable = [](CellClass c) {
     const auto code = static_cast<unsigned>(c);

@@ -46,6 +46,11 @@ inline std::uint64_t binary_cells_file_bytes(const GridSpec& grid) {
 /// low bits are packed as they are: checking the codes (first_unstorable_cell) is the caller's.
 void append_packed_cells(std::span<const CellClass> cells, std::string& out);
 
+/// append_packed_cells with the codes checked on the way: returns the index of the first cell
+/// the binary encoding cannot store (first_unstorable_cell), and then appends nothing, or
+/// cells.size() when every cell was packed.
+std::size_t append_checked_packed_cells(std::span<const CellClass> cells, std::string& out);
+
 /// The index of the first cell whose code the binary encoding cannot store (the reserved 10, or
 /// a value above 11), or cells.size() when every code is 00, 01 or 11.
 std::size_t first_unstorable_cell(std::span<const CellClass> cells);

@@ -181,6 +181,9 @@ TEST(PackedCells, AreTheFourCellsABytePackingOfEveryLengthAndMix) {
       append_packed_cells(cells, packed);
       ASSERT_EQ(packed, "head" + expected) << n << " cells";
       EXPECT_EQ(first_unstorable_cell(cells), n);
+      std::string checked = "head";
+      EXPECT_EQ(append_checked_packed_cells(cells, checked), n);
+      ASSERT_EQ(checked, "head" + expected) << n << " cells, checked";
     }
   }
 }
@@ -193,6 +196,9 @@ TEST(PackedCells, FindTheFirstCodeTheEncodingCannotStoreWherever) {
         cells[at] = code(bad);
         if (at + 1 < n) cells[n - 1] = code(2);  // a later one is not the first
         ASSERT_EQ(first_unstorable_cell(cells), at) << n << " cells, code " << bad << " at " << at;
+        std::string packed = "head";
+        ASSERT_EQ(append_checked_packed_cells(cells, packed), at) << n << " cells, at " << at;
+        ASSERT_EQ(packed, "head") << "a refused layer adds nothing";
       }
     }
   }
@@ -209,6 +215,9 @@ TEST(PackedCells, FindTheFirstUnstorableCodeInALongLayer) {
       cells[at] = code(bad);
       if (at + 3 < n) cells[at + 3] = code(4);
       ASSERT_EQ(first_unstorable_cell(cells), at) << "code " << bad << " at " << at;
+      std::string packed;
+      ASSERT_EQ(append_checked_packed_cells(cells, packed), at) << "code " << bad << " at " << at;
+      ASSERT_TRUE(packed.empty());
     }
   }
   EXPECT_EQ(first_unstorable_cell(std::vector<CellClass>(n, code(3))), n);
