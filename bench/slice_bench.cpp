@@ -133,7 +133,7 @@ void shell_classify_layer_sphere(benchmark::State& state, ShellMode mode) {
       solid_layers(mesh, grid, k, BoundaryShell::reach_layers(grid, mode, thickness));
   const SolidLayerLookup lookup = solid.lookup();
   const BoundaryShell shell(mesh, grid, mode, thickness);
-  std::vector<CellClass> cells;
+  std::vector<CellClass> cells(grid.cells_per_layer());
   for (auto _ : state) {
     shell.classify(k, lookup, cells);
     benchmark::DoNotOptimize(cells.data());

@@ -70,7 +70,11 @@ void add_loop_diagnostics(SliceSummary& summary) {
 
 /// A layer ready to be written: its cells, their counts, and what each sink prepared of it.
 struct ClassifiedLayer {
-  std::vector<CellClass> cells;
+  /// nx * ny classes, or none when the cells are not wanted. Not cleared when allocated: the
+  /// shell writes every class.
+  std::unique_ptr<CellClass[]> classes;
+  std::size_t class_count = 0;
+  std::span<CellClass> cells() { return {classes.get(), class_count}; }
   std::uint64_t interior = 0;
   std::uint64_t boundary = 0;
   std::vector<std::unique_ptr<PreparedLayer>> prepared;  ///< by sink
@@ -139,7 +143,6 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
       auto node = pending.extract(k);
       LayerGeometry& g = node.mapped();
       ClassifiedLayer& done = layers[k - from];
-      const std::vector<CellClass>& cells = done.cells;
       LayerStats& stats = summary.layers[k - first];
       stats.layer = k;
       stats.z_mm = grid.zk(k);
@@ -171,7 +174,7 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
       summary.open_chains += stats.open_chains;
       summary.exact_fallbacks += g.fill.exact_fallbacks;
       summary.contour_volume_mm3 += stats.contour_area_mm2 * grid.dz;
-      const LayerResult result{k, grid.zk(k), cells, g.contours, g.fill.hatches};
+      const LayerResult result{k, grid.zk(k), done.cells(), g.contours, g.fill.hatches};
       for (std::size_t s = 0; s < sinks.size(); ++s) {
         if (auto ok = sinks[s]->add_prepared_layer(result, std::move(done.prepared[s])); !ok) {
           abort_all(sinks);
@@ -245,12 +248,14 @@ Result<SliceSummary> run_layers(const IndexedMesh& mesh, const GridSpec& grid,
       tbb::parallel_for(class_from, class_to, [&](std::uint32_t k) {
         ClassifiedLayer& done = classifying[k - class_from];
         if (classify) {
-          const BoundaryShell::ClassCounts counts = shell->classify(k, lookup, done.cells);
+          done.class_count = grid.cells_per_layer();
+          done.classes = std::make_unique_for_overwrite<CellClass[]>(done.class_count);
+          const BoundaryShell::ClassCounts counts = shell->classify(k, lookup, done.cells());
           done.interior = counts.interior;
           done.boundary = counts.boundary;
         }
         const LayerGeometry& g = *classifying_geometry[k - class_from];
-        const LayerResult result{k, grid.zk(k), done.cells, g.contours, g.fill.hatches};
+        const LayerResult result{k, grid.zk(k), done.cells(), g.contours, g.fill.hatches};
         done.prepared.resize(sinks.size());
         for (std::size_t s = 0; s < sinks.size(); ++s) {
           done.prepared[s] = sinks[s]->prepare_layer(result);

@@ -78,7 +78,11 @@ class Coordinator {
     } else {
       // Hatches are not kept: the comparison does not use them.
       me.held.emplace(layer.layer,
-                      HeldLayer{layer.layer, layer.z_mm, layer.cells, layer.contours, {}});
+                      HeldLayer{layer.layer,
+                                layer.z_mm,
+                                std::vector<CellClass>(layer.cells.begin(), layer.cells.end()),
+                                layer.contours,
+                                {}});
       if (me.held.size() >= window_) {
         token_ = 1 - s;
         changed_.notify_all();

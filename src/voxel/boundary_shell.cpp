@@ -559,12 +559,11 @@ std::uint32_t BoundaryShell::reach_layers(const GridSpec& grid, ShellMode mode,
 }
 
 BoundaryShell::ClassCounts BoundaryShell::classify(std::uint32_t k, const SolidLayerLookup& solid,
-                                                   std::vector<CellClass>& out) const {
+                                                   std::span<CellClass> out) const {
   const SolidRows* here = solid(k);
   STRATA_ASSERT(here != nullptr && here->nx() == grid_.nx && here->ny() == grid_.ny,
                 "the layer classified has its solid cells");
-  // Written whole by the first ring.
-  out.resize(grid_.cells_per_layer());
+  STRATA_ASSERT(out.size() == grid_.cells_per_layer(), "a class for each cell of the layer");
   // Solid cells, and the first ring: a solid cell with an empty 6-neighbour.
   std::uint64_t boundary = first_ring(*here, solid(static_cast<std::int64_t>(k) - 1),
                                       solid(static_cast<std::int64_t>(k) + 1), out.data());
@@ -576,7 +575,7 @@ BoundaryShell::ClassCounts BoundaryShell::classify(std::uint32_t k, const SolidL
   return {here->count() - boundary, boundary};
 }
 
-std::uint64_t BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<CellClass>& out) const {
+std::uint64_t BoundaryShell::mark_near_surface(std::uint32_t k, std::span<CellClass> out) const {
   const double t = thickness_mm_;
   if (!(t > 0.0) || patches_.empty()) return 0;
   std::uint64_t marked = 0;
@@ -707,7 +706,7 @@ std::uint64_t BoundaryShell::mark_near_surface(std::uint32_t k, std::vector<Cell
 
 std::uint64_t BoundaryShell::mark_near_small_facets(std::span<const FacetReach> facets,
                                                     const Slab& slab, double z,
-                                                    std::vector<CellClass>& out) const {
+                                                    std::span<CellClass> out) const {
   std::int64_t pi0 = facets[0].i0, pi1 = facets[0].i1, pj0 = facets[0].j0, pj1 = facets[0].j1;
   for (const FacetReach& m : facets) {
     pi0 = std::min(pi0, m.i0);
@@ -741,7 +740,7 @@ std::uint64_t BoundaryShell::mark_near_small_facets(std::span<const FacetReach> 
 
 void BoundaryShell::gather_candidates(std::int64_t pi0, std::int64_t pi1, std::int64_t pj0,
                                       std::int64_t rows, const Slab& slab, double z,
-                                      const std::vector<CellClass>& out,
+                                      std::span<const CellClass> out,
                                       Candidates& candidates) const {
   const double t = thickness_mm_;
   candidates.pi0 = pi0;
@@ -830,7 +829,7 @@ std::size_t BoundaryShell::list_few_candidates(const Candidates& candidates, dou
 
 std::uint64_t BoundaryShell::test_candidates(std::span<const FacetReach> facets, const Slab& slab,
                                              Candidates& candidates, double z,
-                                             std::vector<CellClass>& out) const {
+                                             std::span<CellClass> out) const {
   const std::uint32_t nx = grid_.nx;
   const std::int64_t pi0 = candidates.pi0;
   const std::int64_t pj0 = candidates.pj0;
@@ -874,7 +873,7 @@ std::uint64_t BoundaryShell::test_candidates(std::span<const FacetReach> facets,
   return marked;
 }
 
-void BoundaryShell::gather_interior(const std::vector<CellClass>& cells, std::int64_t pi0,
+void BoundaryShell::gather_interior(std::span<const CellClass> cells, std::int64_t pi0,
                                     std::int64_t pi1, std::int64_t pj0, std::int64_t rows,
                                     std::uint64_t* interior) const {
   const std::uint64_t columns = run_bits(pi0, pi1, pi0);
@@ -891,7 +890,7 @@ std::uint64_t BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, 
                                                 std::int64_t pi0, std::int64_t pi1,
                                                 std::int64_t pj0, std::int64_t rows,
                                                 std::uint64_t* interior,
-                                                std::vector<CellClass>& out) const {
+                                                std::span<CellClass> out) const {
   const double t = thickness_mm_;
   const double t2 = t * t;
   const std::uint32_t nx = grid_.nx;
@@ -956,7 +955,7 @@ std::uint64_t BoundaryShell::mark_near_wide_facet(const Vec3& a, const Vec3& b, 
                                                   double z, const double box[4], double grow,
                                                   std::int64_t i0_box, std::int64_t i1_box,
                                                   std::int64_t j0, std::int64_t j1,
-                                                  std::vector<CellClass>& out) const {
+                                                  std::span<CellClass> out) const {
   const double t = thickness_mm_;
   const std::uint32_t nx = grid_.nx;
   const detail::TriangleDistanceFilter filter(a, b, c, t);
@@ -1003,7 +1002,7 @@ std::uint64_t BoundaryShell::mark_near_wide_facet(const Vec3& a, const Vec3& b, 
 }
 
 std::uint64_t BoundaryShell::mark_rings(std::uint32_t k, const SolidLayerLookup& solid,
-                                        std::vector<CellClass>& out) const {
+                                        std::span<CellClass> out) const {
   // A solid cell's ring is its count of 6-neighbour steps to the nearest empty cell (outside the
   // grid counts as empty): a shortest path through solid cells to the first ring and one step
   // out. The straight staircase toward the nearest empty cell is such a path, since each cell on

@@ -69,7 +69,7 @@ inline SlicedCells slice_in_memory(const TriangleSoup& soup, const SliceOptions&
       return {};
     }
     Result<void> add_layer(const LayerResult& layer) override {
-      out_.layers.push_back(layer.cells);
+      out_.layers.emplace_back(layer.cells.begin(), layer.cells.end());
       return {};
     }
     Result<void> finish() override { return {}; }

@@ -14,7 +14,7 @@ class CollectingSink final : public LayerSink {
     return {};
   }
   Result<void> add_layer(const LayerResult& layer) override {
-    layers.push_back(layer.cells);
+    layers.emplace_back(layer.cells.begin(), layer.cells.end());
     loops.push_back(layer.contours.loops);
     order.push_back(layer.layer);
     hatches += layer.hatches.size();

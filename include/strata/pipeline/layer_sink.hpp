@@ -34,7 +34,7 @@ struct LayerResult {
   std::uint32_t layer = 0;  ///< k
   double z_mm = 0.0;        ///< the cutting plane, GridSpec::zk(k)
   /// nx * ny, row-major (j * nx + i); empty when no sink needs cells (LayerSink::needs_cells).
-  const std::vector<CellClass>& cells;
+  std::span<const CellClass> cells;
   const LayerContours& contours;
   const std::vector<HatchSegment>& hatches;
 };

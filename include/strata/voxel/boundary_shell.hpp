@@ -50,14 +50,15 @@ class BoundaryShell {
     std::uint64_t interior = 0;
     std::uint64_t boundary = 0;
   };
-  /// Classifies layer k into `out` (nx * ny classes, row-major), and counts its classes (from
-  /// the runs and the cells the shell marks, without another pass over the layer).
+  /// Classifies layer k into `out` (nx * ny classes, row-major; each is written, so it need not
+  /// be cleared first), and counts its classes (from the runs and the cells the shell marks,
+  /// without another pass over the layer).
   ClassCounts classify(std::uint32_t k, const SolidLayerLookup& solid,
-                       std::vector<CellClass>& out) const;
+                       std::span<CellClass> out) const;
 
  private:
   // The markers below return how many Interior cells they made Boundary.
-  std::uint64_t mark_near_surface(std::uint32_t k, std::vector<CellClass>& out) const;
+  std::uint64_t mark_near_surface(std::uint32_t k, std::span<CellClass> out) const;
   /// A facet, with the box of cells of a layer it can reach.
   struct FacetReach {
     const Vec3* corner[3];
@@ -135,35 +136,34 @@ class BoundaryShell {
   /// The small facets of a patch, tested over the box they reach together, a tile at a time;
   /// `slab` holds the patch's facets.
   std::uint64_t mark_near_small_facets(std::span<const FacetReach> facets, const Slab& slab,
-                                       double z, std::vector<CellClass>& out) const;
+                                       double z, std::span<CellClass> out) const;
   /// The candidates of columns pi0 .. pi1 (at most 64) and `rows` rows from pj0.
   void gather_candidates(std::int64_t pi0, std::int64_t pi1, std::int64_t pj0, std::int64_t rows,
-                         const Slab& slab, double z, const std::vector<CellClass>& out,
+                         const Slab& slab, double z, std::span<const CellClass> out,
                          Candidates& candidates) const;
   /// Tests the facets on the candidates of their boxes (boxes that `candidates` hold), marking
   /// those closer than t and clearing their bits.
   std::uint64_t test_candidates(std::span<const FacetReach> facets, const Slab& slab,
-                                Candidates& candidates, double z,
-                                std::vector<CellClass>& out) const;
+                                Candidates& candidates, double z, std::span<CellClass> out) const;
   Vec3 cell_centre(std::int64_t i, std::int64_t j, double z) const {
     return {grid_.xc(static_cast<std::uint32_t>(i)), grid_.yc(static_cast<std::uint32_t>(j)), z};
   }
   /// The interior cells of rows pj0 .. pj0 + rows - 1, columns pi0 .. pi1 (at most 64), as bits.
-  void gather_interior(const std::vector<CellClass>& cells, std::int64_t pi0, std::int64_t pi1,
+  void gather_interior(std::span<const CellClass> cells, std::int64_t pi0, std::int64_t pi1,
                        std::int64_t pj0, std::int64_t rows, std::uint64_t* interior) const;
   /// Marks the interior cells (bits of `interior`, row r of the box from row pj0, bit i - pi0)
   /// certainly closer than t to one of `vertices`, and clears their bits: they are closer than
   /// t to the surface, and no facet need test them.
   std::uint64_t mark_near_vertices(std::span<const Vec3> vertices, double z, std::int64_t pi0,
                                    std::int64_t pi1, std::int64_t pj0, std::int64_t rows,
-                                   std::uint64_t* interior, std::vector<CellClass>& out) const;
+                                   std::uint64_t* interior, std::span<CellClass> out) const;
   /// A facet at least kNarrowFromCells wide: each row narrowed to the stretch near the facet.
   std::uint64_t mark_near_wide_facet(const Vec3& a, const Vec3& b, const Vec3& c, double z,
                                      const double box[4], double grow, std::int64_t i0_box,
                                      std::int64_t i1_box, std::int64_t j0, std::int64_t j1,
-                                     std::vector<CellClass>& out) const;
+                                     std::span<CellClass> out) const;
   std::uint64_t mark_rings(std::uint32_t k, const SolidLayerLookup& solid,
-                           std::vector<CellClass>& out) const;
+                           std::span<CellClass> out) const;
 
   const IndexedMesh& mesh_;
   GridSpec grid_;

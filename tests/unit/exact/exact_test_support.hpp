@@ -32,7 +32,7 @@ class LayerCollector final : public LayerSink {
     return {};
   }
   Result<void> add_layer(const LayerResult& layer) override {
-    cells.push_back(layer.cells);
+    cells.emplace_back(layer.cells.begin(), layer.cells.end());
     contours.push_back(layer.contours);
     hatches.push_back(layer.hatches);
     return {};

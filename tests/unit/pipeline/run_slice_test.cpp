@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <functional>
 #include <memory>
@@ -223,7 +224,7 @@ class PreparingSink final : public LayerSink {
     ++prepared_[layer.layer];
     auto copy = std::make_unique<Copy>();
     copy->layer = layer.layer;
-    copy->cells = layer.cells;
+    copy->cells.assign(layer.cells.begin(), layer.cells.end());
     return copy;
   }
   Result<void> add_layer(const LayerResult& layer) override {
@@ -233,7 +234,8 @@ class PreparingSink final : public LayerSink {
   Result<void> add_prepared_layer(const LayerResult& layer,
                                   std::unique_ptr<PreparedLayer> prepared) override {
     const auto* copy = dynamic_cast<const Copy*>(prepared.get());
-    if (copy == nullptr || copy->layer != layer.layer || copy->cells != layer.cells) {
+    if (copy == nullptr || copy->layer != layer.layer ||
+        !std::ranges::equal(copy->cells, layer.cells)) {
       mismatched.push_back(layer.layer);
     }
     order.push_back(layer.layer);

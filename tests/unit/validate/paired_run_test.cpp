@@ -2,6 +2,7 @@
 // hands the turn over, and failures on either side.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -44,7 +45,7 @@ struct Seen {
   PairCallback callback() {
     return [this](const LayerResult* a, const LayerResult* b) {
       if (a && b) {
-        EXPECT_EQ(a->cells, b->cells) << "a pair holds the same layer";
+        EXPECT_TRUE(std::ranges::equal(a->cells, b->cells)) << "a pair holds the same layer";
       }
       calls.emplace_back(a ? static_cast<int>(a->layer) : -1, b ? static_cast<int>(b->layer) : -1);
     };

@@ -17,7 +17,7 @@ using test::welded_box;
 struct SlicedLayers final : LayerSink {
   Result<void> begin(const SliceRunInfo&) override { return {}; }
   Result<void> add_layer(const LayerResult& layer) override {
-    cells.push_back(layer.cells);
+    cells.emplace_back(layer.cells.begin(), layer.cells.end());
     contours.push_back(layer.contours);
     return {};
   }

@@ -288,8 +288,10 @@ TEST(BoundaryShell, RingsAreTheirDefinitionCellForCell) {
       const BoundaryShell shell(mesh, grid, ShellMode::Layers, n == 255 ? 1000.0 : n + 0.5);
       ASSERT_EQ(shell.rings(), n);
       std::size_t wrong = 0, beyond_first = 0;
-      std::vector<CellClass> out;
+      std::vector<CellClass> out(std::size_t{nx} * ny);
       for (std::uint32_t k = 0; k < nz; ++k) {
+        // The reserved code in every cell: classify writes each one.
+        std::fill(out.begin(), out.end(), static_cast<CellClass>(0b10));
         const BoundaryShell::ClassCounts counts = shell.classify(k, solid, out);
         EXPECT_EQ(counts.interior, static_cast<std::uint64_t>(
                                        std::count(out.begin(), out.end(), CellClass::Interior)));
