@@ -30,8 +30,7 @@ void SolidRows::add(std::uint32_t row, std::uint32_t begin, std::uint32_t end) {
   if (begin >= end) return;
   STRATA_ASSERT(row < ny_ && end <= nx_, "a run within the grid");
   STRATA_ASSERT(rows_started_ == 0 || row >= last_row_, "rows in increasing order");
-  while (rows_started_ <= row)
-    row_start_[rows_started_++] = static_cast<std::uint32_t>(runs_.size());
+  while (rows_started_ <= row) row_start_[rows_started_++] = runs_.size();
   last_row_ = row;
   if (runs_.size() > row_start_[row]) {
     SolidRun& last = runs_.back();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -51,9 +52,9 @@ class SolidRows {
  private:
   std::uint32_t nx_ = 0, ny_ = 0;
   std::vector<SolidRun> runs_;
-  /// Row j's runs are runs_[row_start_[j] .. row_start_[j + 1]); filled up to the last row added
-  /// and completed on demand (rows past it hold none).
-  std::vector<std::uint32_t> row_start_;
+  /// Row j's runs are runs_[row_start_[j] .. row_start_[j + 1]), the end of the last row added
+  /// being runs_.size(); the starts are set up to that row, and the rows past it hold none.
+  std::vector<std::size_t> row_start_;
   std::uint32_t rows_started_ = 0;  ///< the rows whose start is set
   std::uint32_t last_row_ = 0;
 };
