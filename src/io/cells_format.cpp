@@ -27,6 +27,19 @@ std::uint64_t load_double_word(const CellClass* cells) {
   return w;
 }
 
+/// The packed byte of the four cells in the low 32 bits of w (their codes' two low bits).
+char pack_four(std::uint64_t w) {
+  return static_cast<char>(((w & 0x03030303U) * kPackMultiplier) >> 24);
+}
+
+/// Nonzero when one of the eight cells of w holds a code the encoding cannot store: a byte above
+/// 3 has a bit in 0xFC; a byte of 2 has bit 1 without bit 0.
+std::uint64_t unstorable_bits(std::uint64_t w) {
+  constexpr std::uint64_t kHigh = 0xFCFCFCFCFCFCFCFCULL;
+  constexpr std::uint64_t kLow = 0x0101010101010101ULL;
+  return (w & kHigh) | ((w >> 1) & ~w & kLow);
+}
+
 }  // namespace
 
 void append_packed_cells(std::span<const CellClass> cells, std::string& out) {
@@ -41,8 +54,7 @@ void append_packed_cells(std::span<const CellClass> cells, std::string& out) {
   for (std::size_t b = 0; b < whole; ++b) {
     const std::size_t c = 4 * b;
     if constexpr (kLittleEndian) {
-      const std::uint64_t w = load_word(cells.data() + c) & 0x03030303U;
-      to[b] = static_cast<char>((w * kPackMultiplier) >> 24);
+      to[b] = pack_four(load_word(cells.data() + c));
     } else {
       to[b] = static_cast<char>(code(c) << 6 | code(c + 1) << 4 | code(c + 2) << 2 | code(c + 3));
     }
@@ -68,17 +80,13 @@ std::size_t append_checked_packed_cells(std::span<const CellClass> cells, std::s
   char* to = out.data() + start;
   // Eight cells a word, checked as first_unstorable_cell checks them and packed as
   // append_packed_cells packs them (two bytes, four cells each): the layer is read once.
-  constexpr std::uint64_t kHigh = 0xFCFCFCFCFCFCFCFCULL;
-  constexpr std::uint64_t kLow = 0x0101010101010101ULL;
-  constexpr std::uint64_t kCodes = 0x0303030303030303ULL;
   std::uint64_t unstorable = 0;
   const std::size_t words = n / 8;
   for (std::size_t b = 0; b < words; ++b) {
     const std::uint64_t w = load_double_word(cells.data() + 8 * b);
-    unstorable |= (w & kHigh) | ((w >> 1) & ~w & kLow);
-    const std::uint64_t codes = w & kCodes;
-    to[2 * b] = static_cast<char>(((codes & 0xFFFFFFFFU) * kPackMultiplier) >> 24);
-    to[2 * b + 1] = static_cast<char>(((codes >> 32) * kPackMultiplier) >> 24);
+    unstorable |= unstorable_bits(w);
+    to[2 * b] = pack_four(w);
+    to[2 * b + 1] = pack_four(w >> 32);
   }
   const std::span<const CellClass> rest = cells.subspan(8 * words);
   if (unstorable != 0 || first_unstorable_cell(rest) < rest.size()) {
@@ -98,24 +106,20 @@ std::size_t first_unstorable_cell(std::span<const CellClass> cells) {
   };
   std::size_t idx = 0;
   if constexpr (kLittleEndian) {
-    // Eight cells at a time: a byte above 3 has a bit in 0xFC; a byte of 2 has bit 1 without
-    // bit 0.
-    constexpr std::uint64_t kHigh = 0xFCFCFCFCFCFCFCFCULL;
-    constexpr std::uint64_t kLow = 0x0101010101010101ULL;
-    const auto unstorable_bits = [&](std::size_t at) {
-      const std::uint64_t w = load_double_word(cells.data() + at);
-      return (w & kHigh) | ((w >> 1) & ~w & kLow);
+    // Eight cells at a time.
+    const auto unstorable_at = [&](std::size_t at) {
+      return unstorable_bits(load_double_word(cells.data() + at));
     };
     // Blocks of 256 cells without a branch inside, which the compiler takes several words a
     // step; the block that holds a bad code is searched word by word below.
     constexpr std::size_t kBlock = 256;
     for (; idx + kBlock <= cells.size(); idx += kBlock) {
       std::uint64_t bad = 0;
-      for (std::size_t at = idx; at < idx + kBlock; at += 8) bad |= unstorable_bits(at);
+      for (std::size_t at = idx; at < idx + kBlock; at += 8) bad |= unstorable_at(at);
       if (bad != 0) break;
     }
     for (; idx + 8 <= cells.size(); idx += 8) {
-      if (unstorable_bits(idx) != 0) break;
+      if (unstorable_at(idx) != 0) break;
     }
   }
   for (; idx < cells.size(); ++idx) {
