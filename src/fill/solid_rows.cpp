@@ -29,9 +29,8 @@ SolidRows SolidRows::from_cells(std::span<const std::uint8_t> cells, std::uint32
 void SolidRows::add(std::uint32_t row, std::uint32_t begin, std::uint32_t end) {
   if (begin >= end) return;
   STRATA_ASSERT(row < ny_ && end <= nx_, "a run within the grid");
-  STRATA_ASSERT(rows_started_ == 0 || row >= last_row_, "rows in increasing order");
+  STRATA_ASSERT(row + 1 >= rows_started_, "rows in increasing order");
   while (rows_started_ <= row) row_start_[rows_started_++] = runs_.size();
-  last_row_ = row;
   if (runs_.size() > row_start_[row]) {
     SolidRun& last = runs_.back();
     STRATA_ASSERT(begin >= last.end, "runs of a row in increasing order");
@@ -54,12 +53,6 @@ std::uint64_t SolidRows::count() const {
   std::uint64_t n = 0;
   for (const SolidRun& r : runs_) n += r.end - r.begin;
   return n;
-}
-
-bool SolidRows::solid(std::uint32_t i, std::uint32_t j) const {
-  const auto runs = row(j);
-  return std::any_of(runs.begin(), runs.end(),
-                     [&](const SolidRun& r) { return r.begin <= i && i < r.end; });
 }
 
 std::vector<std::uint8_t> SolidRows::cells() const {

@@ -42,8 +42,6 @@ class SolidRows {
   std::span<const SolidRun> row(std::uint32_t j) const;
   /// The solid cells counted.
   std::uint64_t count() const;
-  /// Whether cell (i, j) is solid.
-  bool solid(std::uint32_t i, std::uint32_t j) const;
   /// The row-major bitmap, 1 for a solid cell and 0 otherwise (empty without rows).
   std::vector<std::uint8_t> cells() const;
 
@@ -55,8 +53,7 @@ class SolidRows {
   /// Row j's runs are runs_[row_start_[j] .. row_start_[j + 1]), the end of the last row added
   /// being runs_.size(); the starts are set up to that row, and the rows past it hold none.
   std::vector<std::size_t> row_start_;
-  std::uint32_t rows_started_ = 0;  ///< the rows whose start is set
-  std::uint32_t last_row_ = 0;
+  std::uint32_t rows_started_ = 0;  ///< the rows whose start is set: the last row added is the last
 };
 
 }  // namespace strata
