@@ -21,23 +21,14 @@ std::vector<std::array<Vec3, 3>> cap_triangles(const winding::BoundaryCaps& caps
   return out;
 }
 
-/// Runs of solid cells along each row, as hatches from the first cell's left edge to the last
-/// cell's right edge.
-std::vector<HatchSegment> hatches_from_cells(const std::vector<std::uint8_t>& solid,
-                                             const GridSpec& grid) {
+/// The runs of solid cells along each row, as hatches from the first cell's left edge to the
+/// last cell's right edge.
+std::vector<HatchSegment> hatches_from_runs(const SolidRows& solid, const GridSpec& grid) {
   std::vector<HatchSegment> hatches;
   for (std::uint32_t j = 0; j < grid.ny; ++j) {
-    const std::uint8_t* row = solid.data() + std::size_t{j} * grid.nx;
-    for (std::uint32_t i = 0; i < grid.nx;) {
-      if (!row[i]) {
-        ++i;
-        continue;
-      }
-      std::uint32_t end = i;
-      while (end < grid.nx && row[end]) ++end;
-      hatches.push_back({j, grid.x0 + static_cast<double>(i) * grid.dx,
-                         grid.x0 + static_cast<double>(end) * grid.dx});
-      i = end;
+    for (const SolidRun& r : solid.row(j)) {
+      hatches.push_back({j, grid.x0 + static_cast<double>(r.begin) * grid.dx,
+                         grid.x0 + static_cast<double>(r.end) * grid.dx});
     }
   }
   return hatches;
@@ -85,8 +76,8 @@ LayerGeometry WindingKernel::compute_layer(std::uint32_t k) const {
     }
   }
   guard_evaluations_ += guarded;
-  geometry.fill.hatches = hatches_from_cells(solid, grid_);
   geometry.fill.solid = SolidRows::from_cells(solid, grid_.nx, grid_.ny);
+  geometry.fill.hatches = hatches_from_runs(geometry.fill.solid, grid_);
 
   // The contours are the mesh's own: the caps only serve the inside test.
   LayerSegments own{closed.layer, closed.z_mm, {}};
