@@ -4,9 +4,11 @@
 #include <boost/sort/spreadsort/integer_sort.hpp>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "predicates/crossing_predicates.hpp"
 #include "predicates/grid_search.hpp"
+#include "strata/core/error.hpp"
 
 namespace strata {
 
@@ -93,14 +95,33 @@ void FacetSweep::group(const IndexedMesh& mesh, const GridSpec& grid) {
 
 void FacetSweep::advance(std::uint32_t k0, std::uint32_t k1) {
   advance_active_facets(buckets_.offsets, buckets_.facets, ranges_.last, k0, k1, scanned_, active_);
+  // A counting sort by layer: each active facet is placed in the lists of the batch's layers it
+  // crosses (one or two on a fine mesh), not looked at again for every layer of the batch.
+  batch_first_ = k0;
+  const std::uint32_t layers = k1 > k0 ? k1 - k0 : 0;
+  const auto crossed = [&](FacetIndex f) {
+    return std::pair{std::max(ranges_.first[f], k0) - k0, std::min(ranges_.last[f], k1 - 1) - k0};
+  };
+  batch_offsets_.assign(std::size_t{layers} + 1, 0);
+  for (const FacetIndex f : active_) {
+    const auto [from, to] = crossed(f);
+    for (std::uint32_t k = from; k <= to && k < layers; ++k) ++batch_offsets_[k + 1];
+  }
+  for (std::uint32_t k = 0; k < layers; ++k) batch_offsets_[k + 1] += batch_offsets_[k];
+  batch_facets_.resize(batch_offsets_[layers]);
+  std::vector<std::size_t> cursor(batch_offsets_.begin(), batch_offsets_.end() - 1);
+  for (const FacetIndex f : active_) {
+    const auto [from, to] = crossed(f);
+    for (std::uint32_t k = from; k <= to && k < layers; ++k) batch_facets_[cursor[k]++] = f;
+  }
 }
 
 std::vector<FacetIndex> FacetSweep::candidates(std::uint32_t k) const {
-  std::vector<FacetIndex> out;
-  out.reserve(active_.size());
-  for (const FacetIndex f : active_) {
-    if (ranges_.first[f] <= k && k <= ranges_.last[f]) out.push_back(f);
-  }
+  STRATA_ASSERT(k >= batch_first_ && k - batch_first_ + 1 < batch_offsets_.size(),
+                "the layer is in the sweep's current batch");
+  const std::size_t at = k - batch_first_;
+  std::vector<FacetIndex> out(batch_facets_.begin() + batch_offsets_[at],
+                              batch_facets_.begin() + batch_offsets_[at + 1]);
   // Facet indices are integers: a radix-based sort (spreadsort) takes them in a few passes.
   boost::sort::spreadsort::integer_sort(out.begin(), out.end());
   return out;

@@ -43,15 +43,16 @@ void advance_active_facets(std::span<const std::uint32_t> offsets,
                            std::vector<FacetIndex>& active);
 
 /// A sweep through the layers, a batch at a time: the facets grouped by first layer once, then
-/// those whose range meets the current batch kept active. Each layer kernel takes its candidate
-/// facets from one.
+/// those whose range meets the current batch kept active, and listed once for each layer of the
+/// batch they cross. Each layer kernel takes its candidate facets from one.
 class FacetSweep {
  public:
   /// Groups the facets of `mesh` (facet_layer_ranges, bucket_facets_by_first_layer).
   void group(const IndexedMesh& mesh, const GridSpec& grid);
   /// True once group() has run (a grid has at least one layer, so the buckets are not empty).
   bool grouped() const { return !buckets_.offsets.empty(); }
-  /// Moves on to the batch [k0, k1) (advance_active_facets). @pre grouped()
+  /// Moves on to the batch [k0, k1) (advance_active_facets) and lists the candidates of its
+  /// layers: a pass over the active facets, rather than one for each layer. @pre grouped()
   void advance(std::uint32_t k0, std::uint32_t k1);
   /// The active facets that cross layer k, in increasing facet order: every later step is then
   /// independent of the order of the sweep. @pre k is in the current batch
@@ -62,6 +63,11 @@ class FacetSweep {
   FacetBuckets buckets_;
   std::vector<FacetIndex> active_;  ///< facets whose layer range meets the current batch
   std::uint32_t scanned_ = 0;       ///< layers whose buckets the sweep has read
+  /// The candidates of the batch's layers (CSR): layer k's are
+  /// batch_facets_[batch_offsets_[k - batch_first_] .. batch_offsets_[k - batch_first_ + 1]).
+  std::uint32_t batch_first_ = 0;
+  std::vector<std::size_t> batch_offsets_;
+  std::vector<FacetIndex> batch_facets_;
 };
 
 /// Cuts the candidate facets with plane z = grid.zk(layer). A facet yields one segment when its

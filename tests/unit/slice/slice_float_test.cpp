@@ -4,11 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "predicates/grid_search.hpp"
@@ -207,6 +209,56 @@ TEST(BucketFacetsByFirstLayer, NoCrossingFacetGivesEmptyBuckets) {
   const FacetBuckets b = bucket_facets_by_first_layer(r, 3);
   EXPECT_EQ(b.offsets, (std::vector<std::uint32_t>{0, 0, 0, 0}));
   EXPECT_TRUE(b.facets.empty());
+}
+
+/// The facets of `m` whose range holds layer k, in facet order, found one by one.
+std::vector<FacetIndex> crossing_layer(const FacetLayerRanges& r, std::uint32_t k) {
+  std::vector<FacetIndex> out;
+  for (std::size_t f = 0; f < r.first.size(); ++f) {
+    if (r.first[f] <= k && k <= r.last[f]) out.push_back(static_cast<FacetIndex>(f));
+  }
+  return out;
+}
+
+TEST(FacetSweep, EachLayerOfEachBatchGetsTheFacetsThatCrossItInFacetOrder) {
+  // Facets of random heights over 40 layers: many cross one or two planes, some none, some
+  // many; swept from several first layers (a layer range) in batches of several sizes, so that
+  // facets start before a batch, end after it and span whole batches.
+  GridSpec g = four_layers();
+  g.nz = 40;
+  std::uint64_t state = 12345;
+  const auto next = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) / static_cast<double>(1ULL << 53);
+  };
+  std::vector<std::array<double, 3>> heights;
+  for (int f = 0; f < 2000; ++f) {
+    const double base = -2.0 + 44.0 * next();
+    const double spread = f % 10 == 0 ? 30.0 * next() : 2.5 * next();
+    heights.push_back({base, base + spread * next(), base + spread});
+  }
+  // Facets given in an order unrelated to their heights' order.
+  std::swap(heights[3], heights[1700]);
+  const IndexedMesh m = facets_at_heights(heights);
+  const FacetLayerRanges r = facet_layer_ranges(m, g);
+  std::size_t checked = 0;
+  for (const std::uint32_t first : {0u, 7u}) {
+    for (const std::uint32_t batch : {1u, 3u, 16u, 64u}) {
+      FacetSweep sweep;
+      sweep.group(m, g);
+      ASSERT_TRUE(sweep.grouped());
+      for (std::uint32_t k0 = first; k0 < g.nz; k0 += batch) {
+        const std::uint32_t k1 = std::min(g.nz, k0 + batch);
+        sweep.advance(k0, k1);
+        for (std::uint32_t k = k0; k < k1; ++k) {
+          EXPECT_EQ(sweep.candidates(k), crossing_layer(r, k))
+              << "layer " << k << ", batches of " << batch << " from " << first;
+          checked += crossing_layer(r, k).size();
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 8u * 2000u) << "most facets cross a layer or more";
 }
 
 /// Mesh `m` cut by plane 0 of four_layers() moved up by half a layer: the plane z = 1.
