@@ -84,6 +84,29 @@ TEST(AppendNumber, WritesWhatFmtWritesAroundEveryPowerOfTenAndItsLayouts) {
   }
 }
 
+TEST(AppendNumber, WritesEveryDigitInEveryPlaceOfTheSignificand) {
+  // The digits are made eight at a time: every digit 0-9 in each of the 16 places of an
+  // integer significand (leading, inner and trailing zeros), and every integer of up to five
+  // digits; as integers and, divided by powers of ten, with the point between the digits.
+  std::vector<double> values;
+  for (std::int64_t n = 0; n < 100000; ++n) values.push_back(static_cast<double>(n));
+  std::int64_t place = 1;
+  for (int p = 0; p < 16; ++p, place *= 10) {
+    for (const std::int64_t base : {std::int64_t{1234567890123456}, std::int64_t{9999999999999999},
+                                    std::int64_t{1000000000000000}, std::int64_t{0}}) {
+      for (std::int64_t d = 0; d <= 9; ++d) {
+        const std::int64_t n = base - (base / place % 10) * place + d * place;
+        if (n > 0) values.push_back(static_cast<double>(n));
+      }
+    }
+  }
+  for (const double v : values) {
+    for (const double x : {v, v / 1e3, v / 1e9, v * 1e-20}) {
+      ASSERT_EQ(appended(x), fmt::format("{}", x)) << x;
+    }
+  }
+}
+
 TEST(AppendText, WritesItsNumbersAsAppendNumberDoesAndItsCharactersBetween) {
   // The longest texts first (their digits are copied in fixed-size pieces past their ends, which
   // must stay in the text's room), then random pairs of every magnitude; a repeated number too.
