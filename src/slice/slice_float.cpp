@@ -97,22 +97,23 @@ void FacetSweep::advance(std::uint32_t k0, std::uint32_t k1) {
   advance_active_facets(buckets_.offsets, buckets_.facets, ranges_.last, k0, k1, scanned_, active_);
   // A counting sort by layer: each active facet is placed in the lists of the batch's layers it
   // crosses (one or two on a fine mesh), not looked at again for every layer of the batch.
+  STRATA_ASSERT(k0 < k1, "a batch holds a layer or more");
   batch_first_ = k0;
-  const std::uint32_t layers = k1 > k0 ? k1 - k0 : 0;
+  const std::uint32_t layers = k1 - k0;
   const auto crossed = [&](FacetIndex f) {
-    return std::pair{std::max(ranges_.first[f], k0) - k0, std::min(ranges_.last[f], k1 - 1) - k0};
+    return std::pair{std::max(ranges_.first[f], k0), std::min(ranges_.last[f], k1 - 1)};
   };
   batch_offsets_.assign(std::size_t{layers} + 1, 0);
   for (const FacetIndex f : active_) {
     const auto [from, to] = crossed(f);
-    for (std::uint32_t k = from; k <= to && k < layers; ++k) ++batch_offsets_[k + 1];
+    for (std::uint32_t k = from; k <= to; ++k) ++batch_offsets_[k - k0 + 1];
   }
   for (std::uint32_t k = 0; k < layers; ++k) batch_offsets_[k + 1] += batch_offsets_[k];
   batch_facets_.resize(batch_offsets_[layers]);
   std::vector<std::size_t> cursor(batch_offsets_.begin(), batch_offsets_.end() - 1);
   for (const FacetIndex f : active_) {
     const auto [from, to] = crossed(f);
-    for (std::uint32_t k = from; k <= to && k < layers; ++k) batch_facets_[cursor[k]++] = f;
+    for (std::uint32_t k = from; k <= to; ++k) batch_facets_[cursor[k - k0]++] = f;
   }
 }
 
