@@ -94,10 +94,10 @@ void FacetSweep::group(const IndexedMesh& mesh, const GridSpec& grid) {
 }
 
 void FacetSweep::advance(std::uint32_t k0, std::uint32_t k1) {
+  STRATA_ASSERT(k0 < k1, "a batch holds a layer or more");
   advance_active_facets(buckets_.offsets, buckets_.facets, ranges_.last, k0, k1, scanned_, active_);
   // A counting sort by layer: each active facet is placed in the lists of the batch's layers it
   // crosses (one or two on a fine mesh), not looked at again for every layer of the batch.
-  STRATA_ASSERT(k0 < k1, "a batch holds a layer or more");
   batch_first_ = k0;
   const std::uint32_t layers = k1 - k0;
   const auto crossed = [&](FacetIndex f) {

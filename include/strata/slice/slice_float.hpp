@@ -52,7 +52,8 @@ class FacetSweep {
   /// True once group() has run (a grid has at least one layer, so the buckets are not empty).
   bool grouped() const { return !buckets_.offsets.empty(); }
   /// Moves on to the batch [k0, k1) (advance_active_facets) and lists the candidates of its
-  /// layers: a pass over the active facets, rather than one for each layer. @pre grouped()
+  /// layers: a pass over the active facets, rather than one for each layer.
+  /// @pre grouped(), k0 < k1, and k0 no less than the last batch's k0
   void advance(std::uint32_t k0, std::uint32_t k1);
   /// The active facets that cross layer k, in increasing facet order: every later step is then
   /// independent of the order of the sweep. @pre k is in the current batch
