@@ -2,10 +2,8 @@
 
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <array>
@@ -23,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/group_by_key.hpp"
 #include "core/huge_pages.hpp"
 #include "diagnose/exact_geometry.hpp"
 #include "diagnose/find_self_intersections_internal.hpp"
@@ -178,44 +177,16 @@ struct ByVertex {
   std::vector<Item> items;
 };
 
-/// A counting sort of the facets' items by vertex: `emit(f, visit)` calls visit(vertex, item)
-/// for each item of facet f, and a vertex's items keep the facets' order. The facets are cut
-/// into one range a thread, each counting and then placing its own items after those of the
-/// ranges before: the result does not depend on the number of threads.
+/// The facets' items grouped by vertex: `emit(f, visit)` calls visit(vertex, item) for each item
+/// of facet f, and a vertex's items keep the facets' order (a counting sort on the threads whose
+/// result does not depend on their number).
 template <class Item, class Emit>
 ByVertex<Item> sort_by_vertex(std::size_t num_vertices, std::size_t num_facets, const Emit& emit) {
-  constexpr std::size_t kMinFacetsARange = 65536;
-  const std::size_t threads = std::min<std::size_t>(
-      tbb::this_task_arena::max_concurrency(),
-      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-  const std::size_t ranges = std::clamp<std::size_t>(num_facets / kMinFacetsARange, 1, threads);
-  const auto facets_of = [&](std::size_t range) {
-    return std::pair{num_facets * range / ranges, num_facets * (range + 1) / ranges};
-  };
-  // Each range's count of items a vertex, then where its next item for that vertex goes.
-  std::vector<std::vector<std::size_t>> next(ranges, std::vector<std::size_t>(num_vertices, 0));
-  tbb::parallel_for(std::size_t{0}, ranges, [&](std::size_t range) {
-    std::vector<std::size_t>& count = next[range];
-    const auto [begin, end] = facets_of(range);
-    for (std::size_t f = begin; f < end; ++f)
-      emit(f, [&](VertexIndex v, const Item&) { ++count[v]; });
-  });
   ByVertex<Item> out;
-  out.start.resize(num_vertices + 1);
-  std::size_t placed = 0;
-  for (std::size_t v = 0; v < num_vertices; ++v) {
-    out.start[v] = placed;
-    for (std::vector<std::size_t>& at : next) placed += std::exchange(at[v], placed);
-  }
-  out.start[num_vertices] = placed;
-  reserve_huge_pages(out.items, placed);
-  out.items.resize(placed);
-  tbb::parallel_for(std::size_t{0}, ranges, [&](std::size_t range) {
-    std::vector<std::size_t>& at = next[range];
-    const auto [begin, end] = facets_of(range);
-    for (std::size_t f = begin; f < end; ++f) {
-      emit(f, [&](VertexIndex v, const Item& item) { out.items[at[v]++] = item; });
-    }
+  out.start = group_by_key<std::size_t>(num_vertices, num_facets, emit, [&](std::size_t total) {
+    reserve_huge_pages(out.items, total);
+    out.items.resize(total);
+    return out.items.data();
   });
   return out;
 }
