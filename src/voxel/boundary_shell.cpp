@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
@@ -19,6 +20,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "core/group_by_key.hpp"
 #include "core/huge_pages.hpp"
 #include "strata/core/error.hpp"
 #include "voxel/triangle_distance_filter_internal.hpp"
@@ -391,25 +393,34 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
                  static_cast<FacetIndex>(f)};
   });
   // Ordered by box, ties by index. When the boxes the facets span are no more than the facets, by
-  // counting (one pass over the facets and one over the boxes, in facet order within a box);
-  // otherwise by a parallel sort.
+  // counting (in facet order within a box, on the threads); otherwise by a parallel sort.
   constexpr std::uint64_t kAxis = (std::uint64_t{1} << 21) - 1;
-  std::uint64_t boxes_x = 1, boxes_y = 1, boxes_z = 1;
-  for (std::size_t f = 0; f < nf; ++f) {
-    const std::uint64_t key = by_patch[f].first;
-    boxes_x = std::max(boxes_x, (key & kAxis) + 1);
-    boxes_y = std::max(boxes_y, (key >> 21 & kAxis) + 1);
-    boxes_z = std::max(boxes_z, (key >> 42) + 1);
-  }
-  if (boxes_x * boxes_y * boxes_z <= nf) {
+  struct BoxCounts {
+    std::uint64_t x = 1, y = 1, z = 1;
+  };
+  const BoxCounts boxes = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, nf, 1 << 14), BoxCounts{},
+      [&](const tbb::blocked_range<std::size_t>& range, BoxCounts counts) {
+        for (std::size_t f = range.begin(); f < range.end(); ++f) {
+          const std::uint64_t key = by_patch[f].first;
+          counts.x = std::max(counts.x, (key & kAxis) + 1);
+          counts.y = std::max(counts.y, (key >> 21 & kAxis) + 1);
+          counts.z = std::max(counts.z, (key >> 42) + 1);
+        }
+        return counts;
+      },
+      [](const BoxCounts& a, const BoxCounts& b) {
+        return BoxCounts{std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
+      });
+  if (boxes.x * boxes.y * boxes.z <= nf) {
     const auto box_of = [&](std::uint64_t key) {
-      return ((key >> 42) * boxes_y + (key >> 21 & kAxis)) * boxes_x + (key & kAxis);
+      return ((key >> 42) * boxes.y + (key >> 21 & kAxis)) * boxes.x + (key & kAxis);
     };
-    std::vector<std::uint32_t> next(boxes_x * boxes_y * boxes_z + 1, 0);
-    for (std::size_t f = 0; f < nf; ++f) ++next[box_of(by_patch[f].first) + 1];
-    std::partial_sum(next.begin(), next.end(), next.begin());
     auto sorted = std::make_unique_for_overwrite<PatchKey[]>(nf);
-    for (std::size_t f = 0; f < nf; ++f) sorted[next[box_of(by_patch[f].first)]++] = by_patch[f];
+    group_by_key<std::uint32_t>(
+        boxes.x * boxes.y * boxes.z, nf,
+        [&](std::size_t f, auto&& visit) { visit(box_of(by_patch[f].first), by_patch[f]); },
+        [&](std::size_t) { return sorted.get(); });
     by_patch = std::move(sorted);
   } else {
     tbb::parallel_sort(by_patch.get(), by_patch.get() + nf);
@@ -537,7 +548,8 @@ BoundaryShell::BoundaryShell(const IndexedMesh& mesh, const GridSpec& grid, Shel
         slab_of(std::span(triangles_by_patch_.get() + patch.begin, patch.end - patch.begin),
                 vertices_by_patch_);
   });
-  std::sort(patches.begin(), patches.end(), [](const Patch& a, const Patch& b) {
+  // A total order (no two patches begin at one facet): any sort gives the one result.
+  tbb::parallel_sort(patches.begin(), patches.end(), [](const Patch& a, const Patch& b) {
     return a.zmin != b.zmin ? a.zmin < b.zmin : a.begin < b.begin;
   });
   patches_ = std::move(patches);
