@@ -606,6 +606,44 @@ TEST(DiagnoseMesh, OneThreadAndSeveralGiveTheSameReport) {
   EXPECT_EQ(mesh_report_json(diagnose_mesh(mesh, soup, keep_every_location())), several);
 }
 
+TEST(DiagnoseMesh, ShellsOfManyBoxesInShuffledFacetOrderAreListedByTheirLowestFacet) {
+  // 3,000 boxes apart, their facets shuffled, and a degenerate facet every so often (in no
+  // shell): 36,000 facets, several blocks and ranges for the threads.
+  constexpr std::size_t kBoxes = 3000;
+  std::vector<std::pair<Triangle, std::size_t>> facets;  // a facet and its box, or kBoxes
+  for (std::size_t b = 0; b < kBoxes; ++b) {
+    const Vec3 lo{static_cast<double>(b % 60) * 3.0, static_cast<double>(b / 60) * 3.0, 0.0};
+    for (const Triangle& t : box_facets_lo_hi_diagonals(lo, {lo.x + 1, lo.y + 1, 1})) {
+      facets.emplace_back(t, b);
+    }
+    if (b % 7 == 0) facets.emplace_back(Triangle{lo, lo, {lo.x, lo.y, 2}}, kBoxes);
+  }
+  std::mt19937 random(11);
+  std::shuffle(facets.begin(), facets.end(), random);
+  std::vector<Triangle> triangles;
+  std::vector<std::size_t> first_of_box(kBoxes, facets.size());
+  for (std::size_t f = 0; f < facets.size(); ++f) {
+    triangles.push_back(facets[f].first);
+    const std::size_t b = facets[f].second;
+    if (b < kBoxes) first_of_box[b] = std::min(first_of_box[b], f);
+  }
+  std::sort(first_of_box.begin(), first_of_box.end());
+  for (const int threads : {1, 2, 4}) {
+    SCOPED_TRACE(threads);
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const MeshReport r = diagnose(triangles);
+    ASSERT_EQ(r.shells.size(), kBoxes);
+    EXPECT_EQ(r.num_closed_shells, kBoxes);
+    for (std::size_t s = 0; s < kBoxes; ++s) {
+      EXPECT_EQ(r.shells[s].first_facet, first_of_box[s]) << s;
+      EXPECT_EQ(r.shells[s].num_facets, 12U) << s;
+      EXPECT_TRUE(r.shells[s].is_balanced) << s;
+      EXPECT_DOUBLE_EQ(r.shells[s].signed_volume_mm3, 1.0) << s;
+    }
+    EXPECT_EQ(r.degenerate_facets.count, (kBoxes + 6) / 7);
+  }
+}
+
 TEST(DiagnoseMesh, KeptLocationsAreTheFirstOfAllLocations) {
   const TriangleSoup soup = soup_of(random_cluster_facets(5));
   const IndexedMesh mesh = weld_vertices(soup);
