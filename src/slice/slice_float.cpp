@@ -1,11 +1,15 @@
 #include "strata/slice/slice_float.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <boost/sort/spreadsort/integer_sort.hpp>
 #include <limits>
 #include <optional>
 #include <utility>
 
+#include "core/group_by_key.hpp"
 #include "predicates/crossing_predicates.hpp"
 #include "predicates/grid_search.hpp"
 #include "strata/core/error.hpp"
@@ -25,48 +29,53 @@ std::uint32_t layers_at_or_below(const GridSpec& grid, double z) {
 FacetLayerRanges facet_layer_ranges(const IndexedMesh& mesh, const GridSpec& grid) {
   // layers_at_or_below is monotone in z, so a facet's count at its lowest (highest) z is the
   // least (greatest) of its vertices' counts: each vertex is searched once, not once per facet
-  // around it (six on a closed mesh).
+  // around it (six on a closed mesh). Both passes share their items out among the threads.
+  constexpr std::size_t kGrain = 16384;
   std::vector<std::uint32_t> at_or_below(mesh.vertices.size());
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    at_or_below[v] = layers_at_or_below(grid, mesh.vertices[v].z);
-  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.vertices.size(), kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t v = range.begin(); v < range.end(); ++v) {
+                        at_or_below[v] = layers_at_or_below(grid, mesh.vertices[v].z);
+                      }
+                    });
   FacetLayerRanges ranges;
   const std::size_t n = mesh.triangles.size();
   ranges.first.resize(n);
   ranges.last.resize(n);
-  for (std::size_t f = 0; f < n; ++f) {
-    const auto& t = mesh.triangles[f];
-    const std::uint32_t a = at_or_below[t[0]];
-    const std::uint32_t b = at_or_below[t[1]];
-    const std::uint32_t c = at_or_below[t[2]];
-    // Layer k is crossed iff z_min < zk <= z_max (a vertex on the plane counts as above).
-    const std::uint32_t first = std::min({a, b, c});
-    const std::uint32_t end = std::max({a, b, c});
-    if (first < end) {
-      ranges.first[f] = first;
-      ranges.last[f] = end - 1;
-    } else {
-      ranges.first[f] = std::numeric_limits<std::uint32_t>::max();
-      ranges.last[f] = 0;
-    }
-  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t f = range.begin(); f < range.end(); ++f) {
+                        const auto& t = mesh.triangles[f];
+                        const std::uint32_t a = at_or_below[t[0]];
+                        const std::uint32_t b = at_or_below[t[1]];
+                        const std::uint32_t c = at_or_below[t[2]];
+                        // Layer k is crossed iff z_min < zk <= z_max (a vertex on the plane
+                        // counts as above).
+                        const std::uint32_t first = std::min({a, b, c});
+                        const std::uint32_t end = std::max({a, b, c});
+                        if (first < end) {
+                          ranges.first[f] = first;
+                          ranges.last[f] = end - 1;
+                        } else {
+                          ranges.first[f] = std::numeric_limits<std::uint32_t>::max();
+                          ranges.last[f] = 0;
+                        }
+                      }
+                    });
   return ranges;
 }
 
 FacetBuckets bucket_facets_by_first_layer(const FacetLayerRanges& ranges, std::uint32_t nz) {
   FacetBuckets buckets;
-  buckets.offsets.assign(std::size_t{nz} + 1, 0);
-  for (std::size_t f = 0; f < ranges.first.size(); ++f) {
-    if (ranges.first[f] <= ranges.last[f]) ++buckets.offsets[ranges.first[f] + 1];
-  }
-  for (std::uint32_t k = 0; k < nz; ++k) buckets.offsets[k + 1] += buckets.offsets[k];
-  buckets.facets.resize(buckets.offsets[nz]);
-  std::vector<std::uint32_t> cursor(buckets.offsets.begin(), buckets.offsets.end() - 1);
-  for (std::size_t f = 0; f < ranges.first.size(); ++f) {
-    if (ranges.first[f] <= ranges.last[f]) {
-      buckets.facets[cursor[ranges.first[f]]++] = static_cast<FacetIndex>(f);
-    }
-  }
+  buckets.offsets = group_by_key<std::uint32_t>(
+      nz, ranges.first.size(),
+      [&](std::size_t f, auto&& visit) {
+        if (ranges.first[f] <= ranges.last[f]) visit(ranges.first[f], static_cast<FacetIndex>(f));
+      },
+      [&](std::size_t total) {
+        buckets.facets.resize(total);
+        return buckets.facets.data();
+      });
   return buckets;
 }
 

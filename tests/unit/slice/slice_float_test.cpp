@@ -3,12 +3,14 @@
 #include "strata/slice/slice_float.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <random>
 #include <span>
 #include <vector>
 
@@ -208,6 +210,37 @@ TEST(BucketFacetsByFirstLayer, NoCrossingFacetGivesEmptyBuckets) {
   const FacetBuckets b = bucket_facets_by_first_layer(r, 3);
   EXPECT_EQ(b.offsets, (std::vector<std::uint32_t>{0, 0, 0, 0}));
   EXPECT_TRUE(b.facets.empty());
+}
+
+TEST(BucketFacetsByFirstLayer, ManyFacetsAreBucketedInFacetOrderWhateverTheNumberOfThreads) {
+  // 200,000 facets of random ranges over 500 layers, a tenth crossing none: several ranges of
+  // facets for the threads to count and place.
+  constexpr std::uint32_t kLayers = 500;
+  std::mt19937 random(3);
+  FacetLayerRanges r;
+  for (int f = 0; f < 200'000; ++f) {
+    const auto first = static_cast<std::uint32_t>(random() % kLayers);
+    const bool none = random() % 10 == 0;
+    r.first.push_back(none ? std::numeric_limits<std::uint32_t>::max() : first);
+    r.last.push_back(
+        none ? 0 : std::min(kLayers - 1, first + static_cast<std::uint32_t>(random() % 3)));
+  }
+  std::vector<std::vector<FacetIndex>> expected(kLayers);
+  for (FacetIndex f = 0; f < r.first.size(); ++f) {
+    if (r.first[f] <= r.last[f]) expected[r.first[f]].push_back(f);
+  }
+  for (const int threads : {1, 2, 4}) {
+    SCOPED_TRACE(threads);
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const FacetBuckets b = bucket_facets_by_first_layer(r, kLayers);
+    ASSERT_EQ(b.offsets.size(), kLayers + 1U);
+    for (std::uint32_t k = 0; k < kLayers; ++k) {
+      const std::vector<FacetIndex> bucket(b.facets.begin() + b.offsets[k],
+                                           b.facets.begin() + b.offsets[k + 1]);
+      ASSERT_EQ(bucket, expected[k]) << "layer " << k;
+    }
+    EXPECT_EQ(b.offsets[kLayers], b.facets.size());
+  }
 }
 
 /// The facets of `m` whose range holds layer k, in facet order, found one by one.
