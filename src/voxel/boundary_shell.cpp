@@ -952,11 +952,12 @@ std::uint64_t BoundaryShell::mark_near_vertices(std::span<const Vec3> vertices, 
       }
       if (hits == 0) continue;
       interior[r] &= ~hits;
-      marked += static_cast<std::uint64_t>(std::popcount(hits));
+      // Counted as they are marked: std::popcount is a library call on the baseline x86-64.
       CellClass* row = out.data() + static_cast<std::size_t>(pj0 + r) * nx;
       while (hits != 0) {
         row[pi0 + std::countr_zero(hits)] = CellClass::Boundary;
         hits &= hits - 1;
+        ++marked;
       }
     }
   }
