@@ -20,8 +20,9 @@ namespace strata {
 ///
 /// The sources are cut into one range a thread, each counting its items by key and then placing
 /// them after those of the ranges before: the result does not depend on the number of threads.
-/// `Count` holds any count of items (std::uint32_t where they are fewer than 2^32: half the
-/// memory of a count a key a range).
+/// Each range holds a count a key, so there are no more ranges than twice the sources a key: on
+/// many threads the counts then take no more memory than two counts a source. `Count` holds any
+/// count of items (std::uint32_t where they are fewer than 2^32: half the memory of a count).
 template <class Count, class Emit, class Storage>
 std::vector<Count> group_by_key(std::size_t num_keys, std::size_t num_sources, const Emit& emit,
                                 const Storage& storage) {
@@ -29,7 +30,10 @@ std::vector<Count> group_by_key(std::size_t num_keys, std::size_t num_sources, c
   const std::size_t threads = std::min<std::size_t>(
       static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()),
       tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-  const std::size_t ranges = std::clamp<std::size_t>(num_sources / kMinSourcesARange, 1, threads);
+  const std::size_t ranges =
+      std::clamp<std::size_t>(std::min(num_sources / kMinSourcesARange,
+                                       2 * num_sources / std::max<std::size_t>(num_keys, 1)),
+                              1, threads);
   const auto sources_of = [&](std::size_t range) {
     return std::pair{num_sources * range / ranges, num_sources * (range + 1) / ranges};
   };

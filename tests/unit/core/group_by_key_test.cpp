@@ -59,28 +59,31 @@ std::pair<std::vector<Count>, std::vector<std::uint32_t>> grouped(const std::vec
 }
 
 TEST(GroupByKey, GroupsEachKeysItemsInTheSourcesOrderWhateverTheNumberOfThreads) {
-  // Enough sources for several ranges (65,536 a range at least), and keys some of which get no
-  // item.
+  // Enough sources for several ranges (65,536 a range at least), with keys some of which get no
+  // item: fewer keys than sources, and as many (where the ranges are fewer, their counts being a
+  // key each).
   constexpr std::size_t kSources = 300'000;
-  constexpr std::uint32_t kKeys = 50'000;
-  const std::vector<Emitted> items = random_items(kSources, kKeys, 7);
-  std::vector<Emitted> expected = items;
-  std::stable_sort(expected.begin(), expected.end(),
-                   [](const Emitted& a, const Emitted& b) { return a.key < b.key; });
-  for (const std::size_t threads : {1, 2, 3, 4}) {
-    SCOPED_TRACE(threads);
-    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    const auto [start, out] = grouped<std::uint32_t>(items, kSources, kKeys);
-    ASSERT_EQ(out.size(), items.size());
-    ASSERT_EQ(start.size(), kKeys + 1U);
-    for (std::size_t i = 0; i < out.size(); ++i) ASSERT_EQ(out[i], expected[i].item) << i;
-    // Each key's items lie between its start and the next.
-    std::size_t at = 0;
-    for (std::uint32_t k = 0; k < kKeys; ++k) {
-      ASSERT_EQ(start[k], at) << k;
-      while (at < expected.size() && expected[at].key == k) ++at;
+  for (const std::uint32_t keys : {50'000U, 300'000U}) {
+    SCOPED_TRACE(keys);
+    const std::vector<Emitted> items = random_items(kSources, keys, 7);
+    std::vector<Emitted> expected = items;
+    std::stable_sort(expected.begin(), expected.end(),
+                     [](const Emitted& a, const Emitted& b) { return a.key < b.key; });
+    for (const std::size_t threads : {1, 2, 3, 4}) {
+      SCOPED_TRACE(threads);
+      const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+      const auto [start, out] = grouped<std::uint32_t>(items, kSources, keys);
+      ASSERT_EQ(out.size(), items.size());
+      ASSERT_EQ(start.size(), keys + 1U);
+      for (std::size_t i = 0; i < out.size(); ++i) ASSERT_EQ(out[i], expected[i].item) << i;
+      // Each key's items lie between its start and the next.
+      std::size_t at = 0;
+      for (std::uint32_t k = 0; k < keys; ++k) {
+        ASSERT_EQ(start[k], at) << k;
+        while (at < expected.size() && expected[at].key == k) ++at;
+      }
+      EXPECT_EQ(start[keys], items.size());
     }
-    EXPECT_EQ(start[kKeys], items.size());
   }
 }
 
