@@ -631,7 +631,8 @@ TEST(DiagnoseMesh, ShellsOfManyBoxesInShuffledFacetOrderAreListedByTheirLowestFa
   for (const int threads : {1, 2, 4}) {
     SCOPED_TRACE(threads);
     const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    const MeshReport r = diagnose(triangles);
+    // The boxes do not meet: the self-intersection search, the dearest check, is spared.
+    const MeshReport r = diagnose(triangles, DiagnoseOptions{.check_self_intersections = false});
     ASSERT_EQ(r.shells.size(), kBoxes);
     EXPECT_EQ(r.num_closed_shells, kBoxes);
     for (std::size_t s = 0; s < kBoxes; ++s) {
