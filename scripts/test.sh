@@ -8,3 +8,4 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh test
 bash scripts/build.sh asan
 ctest --preset asan || { bash scripts/failure_digest.sh build/asan; exit 1; }
+bash scripts/skipped_digest.sh build/asan
