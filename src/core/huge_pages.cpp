@@ -3,6 +3,8 @@
 #include <sys/mman.h>
 
 #include <cstdint>
+#include <cstdlib>
+#include <new>
 
 namespace strata {
 
@@ -24,6 +26,34 @@ void advise_huge_pages(void* data, std::size_t bytes) {
   (void)data;
   (void)bytes;
 #endif
+}
+
+namespace {
+constexpr std::size_t kHugePage = std::size_t{2} << 20;
+}  // namespace
+
+void* map_zeroed_pages(std::size_t bytes) {
+  // Below a huge page, a mapping of its own would gain nothing and cost two system calls.
+  if (bytes < kHugePage) {
+    void* data = std::calloc(bytes, 1);
+    if (data == nullptr) throw std::bad_alloc();
+    return data;
+  }
+  void* data = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (data == MAP_FAILED) throw std::bad_alloc();
+#ifdef MADV_HUGEPAGE
+  // The mapping is the array's own: the advice ends with it. A refusal leaves ordinary pages.
+  (void)madvise(data, bytes, MADV_HUGEPAGE);
+#endif
+  return data;
+}
+
+void unmap_pages(void* data, std::size_t bytes) {
+  if (bytes < kHugePage) {
+    std::free(data);
+  } else {
+    (void)munmap(data, bytes);
+  }
 }
 
 }  // namespace strata

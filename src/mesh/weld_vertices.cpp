@@ -1,5 +1,11 @@
 #include "strata/mesh/weld_vertices.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdint>
@@ -8,6 +14,7 @@
 #include <vector>
 
 #include "core/huge_pages.hpp"
+#include "mesh/weld_vertices_internal.hpp"
 #include "strata/core/error.hpp"
 
 namespace strata {
@@ -45,15 +52,17 @@ struct PointKeyHash {
 };
 
 /// The vertices seen so far, found by their key: open addressing with linear probing over a
-/// power-of-two table of (hash, vertex + 1) pairs, kept at most half full. Flat and allocated
-/// once (and on the rare doubling), where a node-based map allocates a node a vertex.
+/// power-of-two table of (high half of the hash, vertex + 1) pairs, kept at most half full. Flat
+/// and allocated once (and on the rare doubling), where a node-based map allocates a node a
+/// vertex; 8 bytes a slot, and in pages of its own, huge where the kernel offers them: the table
+/// is read at random, and with 4 KiB pages nearly every probe of a million-facet model's (8 MiB)
+/// missed the TLB.
 class VertexTable {
  public:
   explicit VertexTable(std::size_t expected) {
     std::size_t capacity = 16;
     while (capacity < 2 * expected) capacity *= 2;
-    reserve_huge_pages(slots_, capacity);
-    slots_.assign(capacity, Slot{});
+    slots_ = ZeroedPageArray<Slot>(capacity);
   }
 
   /// Starts loading the slot where a key of this hash is looked for.
@@ -67,11 +76,17 @@ class VertexTable {
     for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
       Slot& slot = slots_[i];
       if (slot.vertex_plus_one == 0) {
-        slot = Slot{hash, next + 1};
-        if (2 * ++size_ > slots_.size()) grow();
+        if (2 * (size_ + 1) > slots_.size()) {
+          // Doubled first: the key is not in the table, and goes where the larger one puts it.
+          grow(vertices);
+          return find_or_insert(key, hash, vertices, next);
+        }
+        slot = Slot{static_cast<std::uint32_t>(hash >> 32), next + 1};
+        ++size_;
         return {next, true};
       }
-      if (slot.hash == hash && key_of(vertices[slot.vertex_plus_one - 1]) == key) {
+      if (slot.tag == static_cast<std::uint32_t>(hash >> 32) &&
+          key_of(vertices[slot.vertex_plus_one - 1]) == key) {
         return {slot.vertex_plus_one - 1, false};
       }
     }
@@ -79,75 +94,141 @@ class VertexTable {
 
  private:
   struct Slot {
-    std::size_t hash = 0;
+    std::uint32_t tag = 0;
     VertexIndex vertex_plus_one = 0;  ///< 0: empty
   };
 
-  void grow() {
-    std::vector<Slot> old(slots_.size() * 2);
-    old.swap(slots_);
+  void grow(const std::vector<Vec3>& vertices) {
+    ZeroedPageArray<Slot> old(slots_.size() * 2);
+    std::swap(old, slots_);
     const std::size_t mask = slots_.size() - 1;
-    for (const Slot& slot : old) {
+    for (std::size_t k = 0; k < old.size(); ++k) {
+      const Slot& slot = old[k];
       if (slot.vertex_plus_one == 0) continue;
-      std::size_t i = slot.hash & mask;
+      std::size_t i = PointKeyHash{}(key_of(vertices[slot.vertex_plus_one - 1])) & mask;
       while (slots_[i].vertex_plus_one != 0) i = (i + 1) & mask;
       slots_[i] = slot;
     }
   }
 
-  std::vector<Slot> slots_;
+  ZeroedPageArray<Slot> slots_;
   std::size_t size_ = 0;
 };
 
-}  // namespace
-
-IndexedMesh weld_vertices(const TriangleSoup& soup) {
-  IndexedMesh mesh;
-  reserve_huge_pages(mesh.triangles, soup.triangles.size());
-  // A closed triangle mesh has about half as many vertices as triangles.
-  reserve_huge_pages(mesh.vertices, soup.triangles.size() / 2 + 3);
-  VertexTable index_of(soup.triangles.size() / 2 + 3);
-
-  // The table is larger than the caches: each corner's slot is fetched a few corners ahead,
-  // when its key and hash are computed, and both are kept until the corner's turn.
+/// Welds a sequence of n points, point(i) for i in order: each point not yet in `table` is
+/// appended to `vertices` (and to the table), and found(i, its vertex) is called for every point.
+/// The table is larger than the caches: each point's slot is fetched a few points ahead, when its
+/// key and hash are computed, and both are kept until the point's turn.
+template <class Point, class Found>
+void weld_sequence(std::size_t n, const Point& point, VertexTable& table,
+                   std::vector<Vec3>& vertices, const Found& found) {
   constexpr std::size_t kAhead = 16;
   struct Ahead {
     PointKey key;
     std::size_t hash;
   };
   std::array<Ahead, kAhead> ahead{};
-  const std::size_t facets = soup.triangles.size();
-  const std::size_t corners = 3 * facets;
-  std::size_t ahead_facet = 0;  // the corner kAhead ahead, as (facet, corner)
-  int ahead_corner = 0;
-  const auto fetch_ahead = [&](std::size_t slot) {
-    const PointKey key = key_of(soup.triangles[ahead_facet][ahead_corner]);
-    ahead[slot] = Ahead{key, PointKeyHash{}(key)};
-    index_of.prefetch(ahead[slot].hash);
-    if (++ahead_corner == 3) {
-      ahead_corner = 0;
-      ++ahead_facet;
-    }
+  const auto fetch = [&](std::size_t i) {
+    const PointKey key = key_of(point(i));
+    ahead[i % kAhead] = Ahead{key, PointKeyHash{}(key)};
+    table.prefetch(ahead[i % kAhead].hash);
   };
-  for (std::size_t c = 0; c < std::min(kAhead, corners); ++c) fetch_ahead(c);
-  std::size_t c = 0;
-  for (std::size_t f = 0; f < facets; ++f) {
-    std::array<VertexIndex, 3> facet{};
-    for (int k = 0; k < 3; ++k, ++c) {
-      const Ahead here = ahead[c % kAhead];
-      if (c + kAhead < corners) fetch_ahead(c % kAhead);
-      const auto [vertex, inserted] = index_of.find_or_insert(
-          here.key, here.hash, mesh.vertices, static_cast<VertexIndex>(mesh.vertices.size()));
-      if (inserted) {
-        STRATA_ASSERT(mesh.vertices.size() < std::numeric_limits<VertexIndex>::max(),
-                      "more distinct vertices than VertexIndex can number");
-        mesh.vertices.push_back(soup.triangles[f][k]);
-      }
-      facet[k] = vertex;
+  for (std::size_t i = 0; i < std::min(kAhead, n); ++i) fetch(i);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Ahead here = ahead[i % kAhead];
+    if (i + kAhead < n) fetch(i + kAhead);
+    const auto [vertex, inserted] = table.find_or_insert(here.key, here.hash, vertices,
+                                                         static_cast<VertexIndex>(vertices.size()));
+    if (inserted) {
+      STRATA_ASSERT(vertices.size() < std::numeric_limits<VertexIndex>::max(),
+                    "more distinct vertices than VertexIndex can number");
+      vertices.push_back(point(i));
     }
-    mesh.triangles.push_back(facet);
+    found(i, vertex);
   }
+}
+
+/// Facets [begin, end) of the soup welded into `vertices`, each facet's vertices written to
+/// triangles[f].
+void weld_facets(const TriangleSoup& soup, std::size_t begin, std::size_t end, VertexTable& table,
+                 std::vector<Vec3>& vertices, std::array<VertexIndex, 3>* triangles) {
+  const auto corner = [&](std::size_t i) -> const Vec3& {
+    return soup.triangles[begin + i / 3][i % 3];
+  };
+  weld_sequence(3 * (end - begin), corner, table, vertices,
+                [&](std::size_t i, VertexIndex v) { triangles[begin + i / 3][i % 3] = v; });
+}
+
+}  // namespace
+
+namespace detail {
+
+IndexedMesh weld_vertices_in_blocks(const TriangleSoup& soup, std::size_t blocks) {
+  const std::size_t facets = soup.triangles.size();
+  blocks = std::clamp<std::size_t>(blocks, 1, std::max<std::size_t>(facets, 1));
+  IndexedMesh mesh;
+  // A closed triangle mesh has about half as many vertices as triangles.
+  reserve_huge_pages(mesh.vertices, facets / 2 + 3);
+  reserve_huge_pages(mesh.triangles, facets);
+  mesh.triangles.resize(facets);
+  VertexTable table(facets / 2 + 3);
+  if (blocks == 1) {
+    weld_facets(soup, 0, facets, table, mesh.vertices, mesh.triangles.data());
+    return mesh;
+  }
+  // The facets in consecutive blocks, each welded on its own (the first into the mesh, the
+  // others into vertices of their own, numbered from 0), side by side. The vertices are then
+  // numbered in order of first appearance, as one weld of the whole would: block b's vertices,
+  // in their own order, are welded into the mesh's after those of the blocks before it, each
+  // found there or appended; a block's vertices are far fewer than its corners. Last, each
+  // block's facets take the mesh's numbers for its own.
+  const auto first_facet = [&](std::size_t b) { return facets * b / blocks; };
+  std::vector<std::vector<Vec3>> own_vertices(blocks);
+  tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
+    const std::size_t begin = first_facet(b), end = first_facet(b + 1);
+    if (b == 0) {
+      weld_facets(soup, begin, end, table, mesh.vertices, mesh.triangles.data());
+      return;
+    }
+    VertexTable own_table((end - begin) / 2 + 3);
+    own_vertices[b].reserve((end - begin) / 2 + 3);
+    weld_facets(soup, begin, end, own_table, own_vertices[b], mesh.triangles.data());
+  });
+  std::vector<std::vector<VertexIndex>> number_of(blocks);
+  for (std::size_t b = 1; b < blocks; ++b) {
+    const std::vector<Vec3>& own = own_vertices[b];
+    number_of[b].resize(own.size());
+    weld_sequence(
+        own.size(), [&](std::size_t i) -> const Vec3& { return own[i]; }, table, mesh.vertices,
+        [&](std::size_t i, VertexIndex v) { number_of[b][i] = v; });
+    std::vector<Vec3>().swap(own_vertices[b]);
+  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(first_facet(1), facets, 4096),
+                    [&](const auto& range) {
+                      // The block of the range's first facet, then each next one as the range
+                      // reaches it.
+                      std::size_t b = 1;
+                      while (first_facet(b + 1) <= range.begin()) ++b;
+                      for (std::size_t f = range.begin(); f < range.end(); ++f) {
+                        while (f >= first_facet(b + 1)) ++b;
+                        for (VertexIndex& v : mesh.triangles[f]) v = number_of[b][v];
+                      }
+                    });
   return mesh;
+}
+
+}  // namespace detail
+
+IndexedMesh weld_vertices(const TriangleSoup& soup) {
+  // Blocks of at least kFacetsABlock facets, one a thread: below that, the numbering pass and the
+  // tables' set-up cost more than the threads save.
+  constexpr std::size_t kFacetsABlock = 1 << 16;
+  // The threads this run may use: the arena's, within a --threads limit.
+  const std::size_t threads =
+      std::min(static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()),
+               tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+  return detail::weld_vertices_in_blocks(
+      soup, std::min(threads, std::max<std::size_t>(soup.triangles.size() / kFacetsABlock, 1)));
 }
 
 }  // namespace strata

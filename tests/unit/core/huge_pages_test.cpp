@@ -9,8 +9,10 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace strata {
 namespace {
@@ -98,6 +100,45 @@ TEST(ReserveHugePages, ReservesAnEmptyVectorOnAdvisedPages) {
   EXPECT_GE(values.capacity(), std::size_t{5} << 20);
   const auto data = reinterpret_cast<std::uintptr_t>(values.data());
   EXPECT_TRUE(advised((data + kHugePage) & ~(kHugePage - 1)));
+}
+
+struct Slot {
+  std::uint32_t tag;
+  std::uint32_t value;
+};
+
+TEST(ZeroedPageArray, HoldsZeroedItemsWhereverItsMemoryComesFrom) {
+  // Under a huge page (from the heap) and above it (a mapping of its own).
+  for (const std::size_t n : {std::size_t{1}, std::size_t{1000}, (kHugePage / sizeof(Slot)) + 1}) {
+    SCOPED_TRACE(n);
+    ZeroedPageArray<Slot> slots(n);
+    ASSERT_EQ(slots.size(), n);
+    for (std::size_t i = 0; i < n; i += 97) ASSERT_EQ(slots[i].tag | slots[i].value, 0U);
+    ASSERT_EQ(slots[n - 1].tag | slots[n - 1].value, 0U);
+    slots[n - 1] = Slot{1, 2};
+    // Moved, the array keeps its items and the one it leaves holds none.
+    ZeroedPageArray<Slot> moved(std::move(slots));
+    EXPECT_EQ(slots.size(), 0U);
+    EXPECT_EQ(moved[n - 1].value, 2U);
+    ZeroedPageArray<Slot> other(3);
+    other = std::move(moved);
+    EXPECT_EQ(other.size(), n);
+    EXPECT_EQ(other[n - 1].tag, 1U);
+  }
+  const ZeroedPageArray<Slot> none;
+  EXPECT_EQ(none.size(), 0U);
+  const ZeroedPageArray<Slot> empty(0);
+  EXPECT_EQ(empty.size(), 0U);
+}
+
+TEST(ZeroedPageArray, ALargeArrayIsAMappingOfItsOwnAdvisedToHugePages) {
+  if (!kernel_offers_huge_pages()) GTEST_SKIP() << "this kernel has no transparent huge pages";
+  const ZeroedPageArray<Slot> slots(4 * kHugePage / sizeof(Slot));
+  EXPECT_TRUE(advised(reinterpret_cast<std::uintptr_t>(&slots[0])));
+}
+
+TEST(ZeroedPageArray, MoreMemoryThanTheSystemGivesIsBadAlloc) {
+  EXPECT_THROW(ZeroedPageArray<Slot>(std::size_t{1} << 58), std::bad_alloc);
 }
 
 }  // namespace

@@ -1,14 +1,20 @@
 #include "strata/mesh/weld_vertices.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <map>
 #include <random>
 #include <string>
 #include <tuple>
 #include <vector>
+
+#include "mesh/weld_vertices_internal.hpp"
 
 namespace strata {
 namespace {
@@ -143,6 +149,119 @@ TEST(WeldVertices, ASoupOfLooseFacetsWeldsWhatRepeatsAfterEveryCornerWasNew) {
     const std::size_t original = n - 1 - 7 * (f - n);
     ASSERT_EQ(mesh.triangles[f], mesh.triangles[original]) << f;
   }
+}
+
+/// The weld as the definition says it, by a sorted map of the coordinates' bits (-0 as +0): the
+/// vertices in order of first appearance, each corner the vertex of its coordinates.
+IndexedMesh reference_weld(const TriangleSoup& soup) {
+  const auto bits = [](double v) {
+    return v == 0.0 ? std::uint64_t{0} : std::bit_cast<std::uint64_t>(v);
+  };
+  std::map<std::tuple<std::uint64_t, std::uint64_t, std::uint64_t>, VertexIndex> number;
+  IndexedMesh mesh;
+  for (const auto& t : soup.triangles) {
+    std::array<VertexIndex, 3> facet{};
+    for (int c = 0; c < 3; ++c) {
+      const auto [at, inserted] =
+          number.try_emplace({bits(t[c].x), bits(t[c].y), bits(t[c].z)},
+                             static_cast<VertexIndex>(mesh.vertices.size()));
+      if (inserted) mesh.vertices.push_back(t[c]);
+      facet[c] = at->second;
+    }
+    mesh.triangles.push_back(facet);
+  }
+  return mesh;
+}
+
+/// A soup whose corners repeat across the whole of it (a small grid of points, either zero's
+/// sign), with runs of facets whose corners are all new between them: a block's vertices are
+/// partly its own, partly first seen in the block before, partly in blocks further back.
+TriangleSoup soup_repeating_across_blocks(std::size_t facets, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> coordinate(-3, 3);
+  std::uniform_int_distribution<int> kind(0, 9);
+  const auto grid = [&] {
+    const int k = coordinate(rng);
+    // Zero of either sign: the two weld.
+    return k == 0 ? (kind(rng) < 5 ? 0.0 : -0.0) : k * 0.5;
+  };
+  TriangleSoup soup;
+  for (std::size_t f = 0; f < facets; ++f) {
+    Triangle t;
+    if (kind(rng) < 3) {
+      for (int c = 0; c < 3; ++c) t[c] = Vec3{static_cast<double>(f), static_cast<double>(c), 7.0};
+    } else {
+      for (Vec3& p : t) p = Vec3{grid(), grid(), grid()};
+    }
+    soup.triangles.push_back(t);
+  }
+  return soup;
+}
+
+void expect_same_mesh(const IndexedMesh& got, const IndexedMesh& want) {
+  ASSERT_EQ(got.vertices.size(), want.vertices.size());
+  ASSERT_EQ(got.triangles.size(), want.triangles.size());
+  for (std::size_t v = 0; v < want.vertices.size(); ++v) {
+    // Bit for bit: the vertex keeps the coordinates of its first appearance, the zero's sign too.
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(got.vertices[v].x),
+              std::bit_cast<std::uint64_t>(want.vertices[v].x))
+        << v;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(got.vertices[v].y),
+              std::bit_cast<std::uint64_t>(want.vertices[v].y))
+        << v;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(got.vertices[v].z),
+              std::bit_cast<std::uint64_t>(want.vertices[v].z))
+        << v;
+  }
+  for (std::size_t f = 0; f < want.triangles.size(); ++f) {
+    ASSERT_EQ(got.triangles[f], want.triangles[f]) << "facet " << f;
+  }
+}
+
+TEST(WeldVertices, WeldedInBlocksTheMeshIsTheOneTheDefinitionGivesWhateverTheirNumber) {
+  for (const unsigned seed : {1U, 2U, 3U}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const TriangleSoup soup = soup_repeating_across_blocks(3000, seed);
+    const IndexedMesh want = reference_weld(soup);
+    // One block a facet and more blocks than facets too (taken as one a facet).
+    for (const std::size_t blocks : {1U, 2U, 3U, 7U, 64U, 2999U, 3000U, 5000U}) {
+      SCOPED_TRACE("blocks " + std::to_string(blocks));
+      expect_same_mesh(detail::weld_vertices_in_blocks(soup, blocks), want);
+    }
+  }
+}
+
+TEST(WeldVertices, LooseFacetsInBlocksGrowTheTablesAndKeepTheirNumbers) {
+  // Every corner new: each block's table and the mesh's grow past what a closed mesh needs.
+  TriangleSoup soup;
+  for (int i = 0; i < 4000; ++i) {
+    const double x = i * 0.25;
+    soup.triangles.push_back({Vec3{x, 0, 0}, {x, 1, 0}, {x, 0, -1.0 - i}});
+  }
+  for (int i = 3999; i >= 0; i -= 5) soup.triangles.push_back(soup.triangles[i]);
+  const IndexedMesh want = reference_weld(soup);
+  ASSERT_EQ(want.vertices.size(), 12000U);
+  for (const std::size_t blocks : {1U, 2U, 4U}) {
+    SCOPED_TRACE("blocks " + std::to_string(blocks));
+    expect_same_mesh(detail::weld_vertices_in_blocks(soup, blocks), want);
+  }
+}
+
+TEST(WeldVertices, AModelLargeEnoughToWeldInBlocksGivesTheSameMeshOnOneThreadOrMore) {
+  // Above two blocks' worth of facets, weld_vertices welds a block a thread.
+  const TriangleSoup soup = soup_repeating_across_blocks(140'000, 11);
+  const IndexedMesh want = reference_weld(soup);
+  for (const std::size_t threads : {1U, 2U, 4U}) {
+    SCOPED_TRACE("threads " + std::to_string(threads));
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    expect_same_mesh(weld_vertices(soup), want);
+  }
+}
+
+TEST(WeldVertices, NoFacetsInBlocksGiveEmptyMesh) {
+  const IndexedMesh mesh = detail::weld_vertices_in_blocks(TriangleSoup{}, 4);
+  EXPECT_TRUE(mesh.vertices.empty());
+  EXPECT_TRUE(mesh.triangles.empty());
 }
 
 }  // namespace
