@@ -8,9 +8,11 @@
 #include <cmath>
 
 #include "export/grey_png_internal.hpp"
+#include "mesh/weld_vertices_internal.hpp"
 #include "sample_models.hpp"
 #include "strata/fill/scanline_fill.hpp"
 #include "strata/io/read_mesh.hpp"
+#include "strata/mesh/primitive_models.hpp"
 #include "strata/slice/slice_float.hpp"
 #include "strata/slicer/slice_model.hpp"
 #include "strata/voxel/boundary_shell.hpp"
@@ -159,6 +161,18 @@ void BM_FacetLayerRanges(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(mesh.triangles.size()));
 }
 BENCHMARK(BM_FacetLayerRanges)->Unit(benchmark::kMicrosecond);
+
+/// The weld of a sphere of 327,680 facets in Arg blocks side by side (weld_vertices takes one a
+/// thread above 131,072 facets): the same mesh either way.
+void BM_WeldSphereInBlocks(benchmark::State& state) {
+  static const TriangleSoup soup = mesh::make_sphere(50.0, 7);
+  const auto blocks = static_cast<std::size_t>(state.range(0));
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(detail::weld_vertices_in_blocks(soup, blocks));
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(soup.triangles.size()));
+}
+BENCHMARK(BM_WeldSphereInBlocks)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_ReadStlBinary(benchmark::State& state) {
   const std::string path = std::string(STRATA_DATA_DIR) + "/real/rear_case.stl";
