@@ -182,7 +182,9 @@ IndexedMesh weld_vertices_in_blocks(const TriangleSoup& soup, std::size_t blocks
   // in their own order, are welded into the mesh's after those of the blocks before it, each
   // found there or appended; a block's vertices are far fewer than its corners. Last, each
   // block's facets take the mesh's numbers for its own.
-  const auto first_facet = [&](std::size_t b) { return facets * b / blocks; };
+  // Block b starts at b q + min(b, r): q or q + 1 facets a block, at least one.
+  const std::size_t q = facets / blocks, r = facets % blocks;
+  const auto first_facet = [&](std::size_t b) { return b * q + std::min(b, r); };
   std::vector<std::vector<Vec3>> own_vertices(blocks);
   tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
     const std::size_t begin = first_facet(b), end = first_facet(b + 1);
@@ -209,8 +211,9 @@ IndexedMesh weld_vertices_in_blocks(const TriangleSoup& soup, std::size_t blocks
                       // reaches it.
                       std::size_t b = 1;
                       while (first_facet(b + 1) <= range.begin()) ++b;
+                      std::size_t block_end = first_facet(b + 1);
                       for (std::size_t f = range.begin(); f < range.end(); ++f) {
-                        while (f >= first_facet(b + 1)) ++b;
+                        if (f == block_end) block_end = first_facet(++b + 1);
                         for (VertexIndex& v : mesh.triangles[f]) v = number_of[b][v];
                       }
                     });
