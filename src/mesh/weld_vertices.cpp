@@ -115,6 +115,10 @@ class VertexTable {
   std::size_t size_ = 0;
 };
 
+/// The vertices a weld of `facets` facets is sized for: a closed triangle mesh has about half as
+/// many vertices as facets (the table and the vertices grow past it when a soup has more).
+std::size_t expected_vertices(std::size_t facets) { return facets / 2 + 3; }
+
 /// Welds a sequence of n points, point(i) for i in order: each point not yet in `table` is
 /// appended to `vertices` (and to the table), and found(i, its vertex) is called for every point.
 /// The table is larger than the caches: each point's slot is fetched a few points ahead, when its
@@ -167,11 +171,10 @@ IndexedMesh weld_vertices_in_blocks(const TriangleSoup& soup, std::size_t blocks
   const std::size_t facets = soup.triangles.size();
   blocks = std::clamp<std::size_t>(blocks, 1, std::max<std::size_t>(facets, 1));
   IndexedMesh mesh;
-  // A closed triangle mesh has about half as many vertices as triangles.
-  reserve_huge_pages(mesh.vertices, facets / 2 + 3);
+  reserve_huge_pages(mesh.vertices, expected_vertices(facets));
   reserve_huge_pages(mesh.triangles, facets);
   mesh.triangles.resize(facets);
-  VertexTable table(facets / 2 + 3);
+  VertexTable table(expected_vertices(facets));
   if (blocks == 1) {
     weld_facets(soup, 0, facets, table, mesh.vertices, mesh.triangles.data());
     return mesh;
@@ -192,8 +195,8 @@ IndexedMesh weld_vertices_in_blocks(const TriangleSoup& soup, std::size_t blocks
       weld_facets(soup, begin, end, table, mesh.vertices, mesh.triangles.data());
       return;
     }
-    VertexTable own_table((end - begin) / 2 + 3);
-    own_vertices[b].reserve((end - begin) / 2 + 3);
+    VertexTable own_table(expected_vertices(end - begin));
+    own_vertices[b].reserve(expected_vertices(end - begin));
     weld_facets(soup, begin, end, own_table, own_vertices[b], mesh.triangles.data());
   });
   std::vector<std::vector<VertexIndex>> number_of(blocks);
