@@ -128,17 +128,23 @@ TEST(WeldVertices, EveryCornerKeepsItsCoordinatesOnAGrid) {
   EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end());
 }
 
-TEST(WeldVertices, ASoupOfLooseFacetsWeldsWhatRepeatsAfterEveryCornerWasNew) {
-  // 20,000 loose facets have six times the vertices a closed mesh of as many facets has: the
-  // table grows several times, and each facet repeated afterwards still finds its corners, with
-  // the vertices numbered in order of first appearance.
-  const int n = 20000;
+/// n loose facets (every corner new), then every `step`-th of them again from the last back.
+TriangleSoup loose_facets_then_repeats(int n, int step) {
   TriangleSoup soup;
   for (int i = 0; i < n; ++i) {
     const double x = i * 0.25;
     soup.triangles.push_back({Vec3{x, 0, 0}, {x, 1, 0}, {x, 0, -1.0 - i}});
   }
-  for (int i = n - 1; i >= 0; i -= 7) soup.triangles.push_back(soup.triangles[i]);
+  for (int i = n - 1; i >= 0; i -= step) soup.triangles.push_back(soup.triangles[i]);
+  return soup;
+}
+
+TEST(WeldVertices, ASoupOfLooseFacetsWeldsWhatRepeatsAfterEveryCornerWasNew) {
+  // 20,000 loose facets have six times the vertices a closed mesh of as many facets has: the
+  // table grows several times, and each facet repeated afterwards still finds its corners, with
+  // the vertices numbered in order of first appearance.
+  const int n = 20000;
+  const TriangleSoup soup = loose_facets_then_repeats(n, 7);
   const auto mesh = weld_vertices(soup);
   ASSERT_EQ(mesh.vertices.size(), 3u * n);
   for (int i = 0; i < n; ++i) {
@@ -233,12 +239,7 @@ TEST(WeldVertices, WeldedInBlocksTheMeshIsTheOneTheDefinitionGivesWhateverTheirN
 
 TEST(WeldVertices, LooseFacetsInBlocksGrowTheTablesAndKeepTheirNumbers) {
   // Every corner new: each block's table and the mesh's grow past what a closed mesh needs.
-  TriangleSoup soup;
-  for (int i = 0; i < 4000; ++i) {
-    const double x = i * 0.25;
-    soup.triangles.push_back({Vec3{x, 0, 0}, {x, 1, 0}, {x, 0, -1.0 - i}});
-  }
-  for (int i = 3999; i >= 0; i -= 5) soup.triangles.push_back(soup.triangles[i]);
+  const TriangleSoup soup = loose_facets_then_repeats(4000, 5);
   const IndexedMesh want = reference_weld(soup);
   ASSERT_EQ(want.vertices.size(), 12000U);
   for (const std::size_t blocks : {1U, 2U, 4U}) {
