@@ -109,8 +109,11 @@ std::optional<std::string> append_empty_zip_entry(std::string_view zip, std::str
   out.reserve(zip.size() + local.size() + central.size());
   out.append(zip.substr(0, directory_offset));
   out += local;
-  out.append(directory);
+  // The new record goes right after the entries' own: bytes the directory holds past them (its
+  // size larger than its records) stay after it, where they cannot be read as its start.
+  out.append(directory.substr(0, at));
   out += central;
+  out.append(directory.substr(at));
   put32(out, kEndSignature);
   put16(out, 0);
   put16(out, 0);

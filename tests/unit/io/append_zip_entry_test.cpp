@@ -50,6 +50,15 @@ TEST(AppendEmptyZipEntry, LeavesAnythingButAPlainZipAlone) {
   std::string bad = zip;
   bad[bad.size() - 22 + 16] = '\x7f';
   EXPECT_FALSE(append_empty_zip_entry(bad, "x").has_value());
+  // A directory that declares more bytes than its entries take (six bytes that begin like a
+  // record): the entry goes before them, and is found again.
+  std::string padded =
+      zip.substr(0, zip.size() - 22) + "PK\x01\x02\x14\x03" + zip.substr(zip.size() - 22);
+  const auto directory_size = static_cast<unsigned char>(padded[padded.size() - 22 + 12]);
+  padded[padded.size() - 22 + 12] = static_cast<char>(directory_size + 6);
+  const auto patched = append_empty_zip_entry(padded, "x");
+  ASSERT_TRUE(patched.has_value());
+  EXPECT_FALSE(append_empty_zip_entry(*patched, "x").has_value());
 }
 
 }  // namespace
