@@ -122,7 +122,7 @@ void PrintTo(const MergeCase& c, std::ostream* os) {
   for (const std::string& arg : c.rule) *os << ' ' << arg;
 }
 
-std::string case_name(const ::testing::TestParamInfo<MergeCase>& info) {
+std::string merge_case_name(const ::testing::TestParamInfo<MergeCase>& info) {
   std::string name = info.param.model.name;
   for (std::size_t i = 1; i < info.param.rule.size(); i += 2) name += "_" + info.param.rule[i];
   return name;
@@ -225,7 +225,8 @@ std::vector<MergeCase> merge_cases() {
   return cases;
 }
 
-INSTANTIATE_TEST_SUITE_P(Models, SliceRangesMerge, ::testing::ValuesIn(merge_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(Models, SliceRangesMerge, ::testing::ValuesIn(merge_cases()),
+                         merge_case_name);
 
 // ---------------------------------------------------------------------------------------------
 // Refusals: each exits 1, names what is wrong, and leaves the output folder without files.

@@ -8,7 +8,7 @@
 namespace strata::diagnose {
 namespace {
 
-MeshReport open_report() {
+MeshReport report_with_every_section() {
   MeshReport r;
   r.num_input_facets = 11;
   r.num_facets = 11;
@@ -28,7 +28,7 @@ MeshReport open_report() {
 }
 
 TEST(MeshReportJson, CarriesCountsLocationsAndVerdict) {
-  const auto j = nlohmann::json::parse(mesh_report_json(open_report()));
+  const auto j = nlohmann::json::parse(mesh_report_json(report_with_every_section()));
   EXPECT_EQ(j["facets"], 11);
   EXPECT_EQ(j["vertices"], 8);
   EXPECT_EQ(j["boundary_edges"]["count"], 3);
@@ -43,7 +43,7 @@ TEST(MeshReportJson, CarriesCountsLocationsAndVerdict) {
 }
 
 TEST(MeshReportJson, UncheckedPartsAreNull) {
-  MeshReport r = open_report();
+  MeshReport r = report_with_every_section();
   r.self_intersections_checked = false;
   const auto j = nlohmann::json::parse(mesh_report_json(r));
   EXPECT_TRUE(j["self_intersections"].is_null());
@@ -51,7 +51,7 @@ TEST(MeshReportJson, UncheckedPartsAreNull) {
 }
 
 TEST(MeshReportJson, NonFiniteNumbersBecomeNull) {
-  MeshReport r = open_report();
+  MeshReport r = report_with_every_section();
   r.volume_mm3 = std::numeric_limits<double>::infinity();
   const auto j = nlohmann::json::parse(mesh_report_json(r));
   EXPECT_TRUE(j["volume_mm3"].is_null());

@@ -7,7 +7,7 @@
 namespace strata::diagnose {
 namespace {
 
-MeshReport open_report() {
+MeshReport open_edges_report() {
   MeshReport r;
   r.num_input_facets = 11;
   r.num_facets = 11;
@@ -20,7 +20,7 @@ MeshReport open_report() {
 }
 
 TEST(MeshReportText, EndsWithVerdictAndReason) {
-  const std::string text = mesh_report_text(open_report());
+  const std::string text = mesh_report_text(open_edges_report());
   ASSERT_FALSE(text.empty());
   EXPECT_EQ(text.back(), '\n');
   const std::string last = text.substr(text.rfind('\n', text.size() - 2) + 1);
@@ -28,14 +28,14 @@ TEST(MeshReportText, EndsWithVerdictAndReason) {
 }
 
 TEST(MeshReportText, ShowsCountAndFirstLocation) {
-  const std::string text = mesh_report_text(open_report());
+  const std::string text = mesh_report_text(open_edges_report());
   EXPECT_NE(text.find("boundary edges"), std::string::npos);
   EXPECT_NE(text.find("3 in 1 loop"), std::string::npos) << text;
   EXPECT_NE(text.find("(0, 0, 0)-(1, 0, 0)"), std::string::npos) << text;
 }
 
 TEST(MeshReportText, SaysWhenSelfIntersectionsWereNotChecked) {
-  const std::string text = mesh_report_text(open_report());
+  const std::string text = mesh_report_text(open_edges_report());
   EXPECT_NE(text.find("not checked"), std::string::npos) << text;
 }
 
@@ -146,7 +146,7 @@ TEST(MeshReportText, SaysWhenASearchWasCutShort) {
 }
 
 TEST(MeshReportText, GivesTheSizeOfTheMesh) {
-  MeshReport r = open_report();
+  MeshReport r = open_edges_report();
   r.num_vertices = 8;
   r.bounds.add({-1, 0, 2});
   r.bounds.add({1, 0.5, 5});

@@ -27,7 +27,7 @@ using testing::small_layers;
 using testing::small_run;
 
 /// Layer 1 of small_run() gets a hole, an outer loop, an open chain and two hatch segments.
-std::vector<LayerData> layers_with_contours() {
+std::vector<LayerData> layers_with_loops_and_a_point() {
   auto layers = small_layers();
   LayerContours& c = layers[1].contours;
   c.loops.push_back(loop({{-1.0, 2.5}, {-1.0, 2.75}, {0.5, 2.75}, {0.5, 2.5}}, LoopKind::Hole));
@@ -42,7 +42,7 @@ std::vector<LayerData> layers_with_contours() {
 std::string write_cli(const ScratchDir& dir, CliEncoding encoding,
                       const SliceRunInfo& run = small_run()) {
   auto sink = make_cli_writer(dir / "part.cli", encoding);
-  return testing::run_and_read(*sink, run, layers_with_contours(), dir / "part.cli");
+  return testing::run_and_read(*sink, run, layers_with_loops_and_a_point(), dir / "part.cli");
 }
 
 /// The values of every `$$KEY/...` line, split at commas.
@@ -292,7 +292,7 @@ TEST(CliWriter, BinaryPolylinePointsAreFloat32AndClosed) {
 TEST(CliWriter, AbortRemovesTheFileAndTheFoldersItCreated) {
   ScratchDir dir;
   auto sink = make_cli_writer(dir / "out" / "part.cli", CliEncoding::Binary);
-  auto layers = layers_with_contours();
+  auto layers = layers_with_loops_and_a_point();
   ASSERT_TRUE(sink->begin(small_run()));
   ASSERT_TRUE(sink->add_layer(layers[0].result()));
   sink->abort();
@@ -301,8 +301,8 @@ TEST(CliWriter, AbortRemovesTheFileAndTheFoldersItCreated) {
 
 TEST(CliWriter, NoFileUnderTheFinalNameBeforeFinish) {
   ScratchDir dir;
-  testing::expect_file_only_after_finish(*make_cli_writer(dir / "part.cli"), layers_with_contours(),
-                                         dir, "part.cli");
+  testing::expect_file_only_after_finish(*make_cli_writer(dir / "part.cli"),
+                                         layers_with_loops_and_a_point(), dir, "part.cli");
 }
 
 TEST(CliWriter, BinaryLayersLongerThanTheWriteBufferAreWhole) {

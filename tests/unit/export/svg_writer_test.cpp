@@ -26,7 +26,7 @@ using testing::small_run;
 
 /// Layer 1 of small_run() gets: a hole (depth 1) listed before its outer loop, a second outer
 /// loop inside the hole, an open chain, and two hatch segments.
-std::vector<LayerData> layers_with_contours() {
+std::vector<LayerData> layers_with_nested_loops() {
   auto layers = small_layers();
   LayerContours& c = layers[1].contours;
   c.loops.push_back(loop({{-1.0, 2.5}, {-1.0, 2.75}, {0.5, 2.75}, {0.5, 2.5}}, LoopKind::Hole, 1));
@@ -41,7 +41,7 @@ std::vector<LayerData> layers_with_contours() {
 
 std::string write_layers(const ScratchDir& dir, const SliceRunInfo& run) {
   auto sink = make_svg_writer(dir.path(), "part");
-  return testing::run_and_read(*sink, run, layers_with_contours(), dir / "svg/part_00001.svg");
+  return testing::run_and_read(*sink, run, layers_with_nested_loops(), dir / "svg/part_00001.svg");
 }
 
 TEST(SvgWriter, WritesOneFileALayerWithFiveDigitIndex) {
@@ -132,7 +132,7 @@ TEST(SvgWriter, TitleNamesTheLayerAndZ) {
 TEST(SvgWriter, TitleEscapesTheMarkupCharactersOfTheStem) {
   ScratchDir dir;
   auto sink = make_svg_writer(dir.path(), "a&b<c>\"d'e");
-  ASSERT_TRUE(run_sink(*sink, small_run(), layers_with_contours()));
+  ASSERT_TRUE(run_sink(*sink, small_run(), layers_with_nested_loops()));
   const std::string svg = read_file(dir / "svg/a&b<c>\"d'e_00000.svg");
   EXPECT_NE(svg.find("<title>a&amp;b&lt;c&gt;&quot;d&apos;e layer 0 z=0.625 mm</title>"),
             std::string::npos)
@@ -142,7 +142,7 @@ TEST(SvgWriter, TitleEscapesTheMarkupCharactersOfTheStem) {
 TEST(SvgWriter, AbortRemovesEarlierLayersAndTheFoldersItCreated) {
   ScratchDir dir;
   auto sink = make_svg_writer(dir / "out", "part");
-  auto layers = layers_with_contours();
+  auto layers = layers_with_nested_loops();
   ASSERT_TRUE(sink->begin(small_run()));
   ASSERT_TRUE(sink->add_layer(layers[0].result()));
   ASSERT_TRUE(sink->add_layer(layers[1].result()));

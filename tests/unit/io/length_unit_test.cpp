@@ -32,17 +32,20 @@ TEST(LengthUnit, NamesParseBackAndGiveTheirMillimetres) {
   EXPECT_EQ(parse_length_unit(""), std::nullopt);
 }
 
-constexpr const char* kObjTriangle = "v 0 0 0\nv 1 0 0\nv 0 1.5 0\nf 1 2 3\n";
+constexpr const char* kObjTriangleOneAndAHalfHigh = "v 0 0 0\nv 1 0 0\nv 0 1.5 0\nf 1 2 3\n";
 
 TEST(ReadMeshScale, DoubleFormatsAreMultipliedOnceInDouble) {
-  const auto inches = read_mesh_bytes(kObjTriangle, "t.obj", {}, {LengthUnit::Inch, 1.0});
+  const auto inches =
+      read_mesh_bytes(kObjTriangleOneAndAHalfHigh, "t.obj", {}, {LengthUnit::Inch, 1.0});
   ASSERT_TRUE(inches) << inches.error().to_string();
   EXPECT_EQ(inches->triangles[0][1], (Vec3{25.4, 0, 0}));
   EXPECT_EQ(inches->triangles[0][2], (Vec3{0, 1.5 * 25.4, 0}));
-  const auto scaled = read_mesh_bytes(kObjTriangle, "t.obj", {}, {LengthUnit::Centimetre, 3.0});
+  const auto scaled =
+      read_mesh_bytes(kObjTriangleOneAndAHalfHigh, "t.obj", {}, {LengthUnit::Centimetre, 3.0});
   ASSERT_TRUE(scaled);
   EXPECT_EQ(scaled->triangles[0][2], (Vec3{0, 1.5 * 30.0, 0}));
-  const auto micro = read_mesh_bytes(kObjTriangle, "t.obj", {}, {LengthUnit::Micrometre, 1.0});
+  const auto micro =
+      read_mesh_bytes(kObjTriangleOneAndAHalfHigh, "t.obj", {}, {LengthUnit::Micrometre, 1.0});
   ASSERT_TRUE(micro);
   EXPECT_EQ(micro->triangles[0][1], (Vec3{0.001, 0, 0}));
 }
@@ -65,8 +68,9 @@ TEST(ReadMeshScale, StlCoordinatesAreRoundedToFloat32AgainAfterScaling) {
 }
 
 TEST(ReadMeshScale, MillimetresAtScaleOneLeaveEveryBitAlone) {
-  const auto plain = read_mesh_bytes(kObjTriangle, "t.obj");
-  const auto same = read_mesh_bytes(kObjTriangle, "t.obj", {}, {LengthUnit::Millimetre, 1.0});
+  const auto plain = read_mesh_bytes(kObjTriangleOneAndAHalfHigh, "t.obj");
+  const auto same =
+      read_mesh_bytes(kObjTriangleOneAndAHalfHigh, "t.obj", {}, {LengthUnit::Millimetre, 1.0});
   ASSERT_TRUE(plain);
   ASSERT_TRUE(same);
   EXPECT_EQ(plain->triangles, same->triangles);
@@ -89,7 +93,8 @@ TEST(ReadMeshScale, CoordinateBeyondFloat32OnceScaledIsAnErrorNamingTheFacet) {
 
 TEST(ReadMeshScale, ScaleMustBeFiniteAndPositive) {
   for (const double scale : {0.0, -1.0, std::numeric_limits<double>::infinity()}) {
-    const auto soup = read_mesh_bytes(kObjTriangle, "t.obj", {}, {LengthUnit::Millimetre, scale});
+    const auto soup =
+        read_mesh_bytes(kObjTriangleOneAndAHalfHigh, "t.obj", {}, {LengthUnit::Millimetre, scale});
     ASSERT_FALSE(soup);
     EXPECT_EQ(soup.error().code, ErrorCode::Usage);
     EXPECT_EQ(soup.error().message.rfind("the scale factor must be a finite number > 0, got ", 0),

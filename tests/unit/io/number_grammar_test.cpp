@@ -119,7 +119,7 @@ TEST_P(NumberGrammar, SameValueOrSameRefusalInEveryFormat) {
   EXPECT_EQ(soup.error().message, "bad number '" + std::string(c.token) + "': " + reason);
 }
 
-std::string case_name(const ::testing::TestParamInfo<NumberGrammar::ParamType>& info) {
+std::string grammar_case_name(const ::testing::TestParamInfo<NumberGrammar::ParamType>& info) {
   std::string token;
   for (const char ch : std::string(kCases[std::get<0>(info.param)].token)) {
     const bool alnum =
@@ -137,7 +137,7 @@ std::string case_name(const ::testing::TestParamInfo<NumberGrammar::ParamType>& 
 INSTANTIATE_TEST_SUITE_P(Tokens, NumberGrammar,
                          ::testing::Combine(::testing::Range<std::size_t>(0, std::size(kCases)),
                                             ::testing::ValuesIn(test::all_text_mesh_formats())),
-                         case_name);
+                         grammar_case_name);
 
 // ---------------------------------------------------------------------------------------------
 // Integers: where a format declares one, a fraction or an exponent is refused, and so is a value

@@ -43,7 +43,7 @@ Bbox3 bounds(const TriangleSoup& soup) {
   return box;
 }
 
-Error read_error(const fs::path& path) {
+Error read_3mf_error(const fs::path& path) {
   const auto soup = read_mesh(path);
   EXPECT_FALSE(soup) << path << " was read";
   return soup ? Error{} : soup.error();
@@ -174,7 +174,7 @@ TEST(Read3mf, AFileWrittenByLib3mfsWriterReads) {
 TEST(Read3mf, NotAZipArchive) {
   const test::TempDir tmp("3mf");
   test::write_file(tmp / "text.3mf", "solid but not a zip\n");
-  const Error e = read_error(tmp / "text.3mf");
+  const Error e = read_3mf_error(tmp / "text.3mf");
   EXPECT_EQ(e.code, ErrorCode::BadInput);
   EXPECT_EQ(e.location, (tmp / "text.3mf").string());
   EXPECT_EQ(e.message,
@@ -186,7 +186,7 @@ TEST(Read3mf, ATruncatedArchive) {
   const test::TempDir tmp("3mf");
   const std::string whole = box_package("millimeter", build_item_xml(1));
   test::write_file(tmp / "cut.3mf", whole.substr(0, whole.size() / 2));
-  EXPECT_EQ(read_error(tmp / "cut.3mf").message,
+  EXPECT_EQ(read_3mf_error(tmp / "cut.3mf").message,
             "not a 3MF file: not a zip archive, or a damaged one (lib3mf: Could not read ZIP "
             "file)");
 }
@@ -197,7 +197,7 @@ TEST(Read3mf, AZipWithoutAModelPart) {
   ASSERT_EQ(parts.back().first, "3D/3dmodel.model");
   parts.pop_back();
   test::write_file(tmp / "empty.3mf", test::make_zip(parts));
-  const Error e = read_error(tmp / "empty.3mf");
+  const Error e = read_3mf_error(tmp / "empty.3mf");
   EXPECT_EQ(e.location, (tmp / "empty.3mf").string());
   EXPECT_EQ(e.message,
             "the 3MF package lacks a part its relationships name (the 3D model?) (lib3mf: Could "
@@ -235,7 +235,7 @@ TEST(Read3mf, BrokenXml) {
       model_xml("millimeter", mesh_object_xml(1, box.vertices, box.triangles), build_item_xml(1));
   xml.replace(xml.find("</build>"), 8, "</build");
   test::write_file(tmp / "broken.3mf", make_3mf(xml));
-  const Error e = read_error(tmp / "broken.3mf");
+  const Error e = read_3mf_error(tmp / "broken.3mf");
   EXPECT_EQ(e.location, (tmp / "broken.3mf").string());
   EXPECT_EQ(e.message, "the 3MF model's XML is malformed (lib3mf: Could not end XML element)");
 }
@@ -247,7 +247,7 @@ TEST(Read3mf, ATriangleIndexOutOfRange) {
   test::write_file(tmp / "index.3mf",
                    make_3mf(model_xml("millimeter", mesh_object_xml(1, box.vertices, box.triangles),
                                       build_item_xml(1))));
-  const Error e = read_error(tmp / "index.3mf");
+  const Error e = read_3mf_error(tmp / "index.3mf");
   EXPECT_EQ(e.code, ErrorCode::BadInput);
   EXPECT_EQ(e.location, (tmp / "index.3mf").string());
   EXPECT_EQ(e.message,
@@ -258,7 +258,7 @@ TEST(Read3mf, ATriangleIndexOutOfRange) {
 TEST(Read3mf, NoMeshObjects) {
   const test::TempDir tmp("3mf");
   test::write_file(tmp / "none.3mf", make_3mf(model_xml("millimeter", "", "")));
-  Error e = read_error(tmp / "none.3mf");
+  Error e = read_3mf_error(tmp / "none.3mf");
   EXPECT_EQ(e.location, (tmp / "none.3mf").string());
   EXPECT_EQ(e.message, "no mesh to slice: the 3MF build has no item");
 
@@ -267,14 +267,14 @@ TEST(Read3mf, NoMeshObjects) {
       "</mesh></object>";
   test::write_file(tmp / "empty_mesh.3mf",
                    make_3mf(model_xml("millimeter", empty_mesh, build_item_xml(1))));
-  e = read_error(tmp / "empty_mesh.3mf");
+  e = read_3mf_error(tmp / "empty_mesh.3mf");
   EXPECT_EQ(e.message, "no mesh to slice: the objects of the 3MF build's 1 item hold no triangle");
 }
 
 TEST(Read3mf, AnUnknownUnitIsRefused) {
   const test::TempDir tmp("3mf");
   test::write_file(tmp / "parsec.3mf", box_package("parsec", build_item_xml(1)));
-  EXPECT_EQ(read_error(tmp / "parsec.3mf").message,
+  EXPECT_EQ(read_3mf_error(tmp / "parsec.3mf").message,
             "the 3MF model's unit is not one of micron, millimeter, centimeter, inch, foot, meter "
             "(lib3mf: invalid model unit)");
 }

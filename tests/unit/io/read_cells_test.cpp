@@ -58,7 +58,7 @@ void expect_small_header(const CellsHeader& h) {
 }
 
 /// Reads `path`, expecting a BadInput error; returns it.
-Error read_error(const std::filesystem::path& path) {
+Error read_cells_error(const std::filesystem::path& path) {
   auto read = read_cells(path);
   EXPECT_FALSE(read) << path << " was read without error";
   if (read) return {};
@@ -182,7 +182,7 @@ TEST(CellsReader, LayerVisitorSeesLayersInOrderAndCanStop) {
 
 TEST(CellsReader, MissingFileIsBadInput) {
   ScratchDir dir;
-  const Error e = read_error(dir / "nope.cells");
+  const Error e = read_cells_error(dir / "nope.cells");
   EXPECT_EQ(e.location, (dir / "nope.cells").string());
 }
 
@@ -204,7 +204,7 @@ TEST_P(CellsReaderBinaryEdit, IsRejected) {
   ScratchDir dir;
   const auto path = write_small(dir, CellsEncoding::Binary);
   test::write_text_file(path, c.edit(read_file(path)));
-  const Error e = read_error(path);
+  const Error e = read_cells_error(path);
   if (c.place != nullptr) {
     EXPECT_EQ(e.location, path.string() + c.place);
   }
@@ -257,7 +257,7 @@ TEST(CellsReader, ReservedCodeNamesLayerRowAndCell) {
   ASSERT_EQ(static_cast<unsigned char>(file[85]), 0xF5);
   file[85] = static_cast<char>(0xF9);
   test::write_text_file(path, file);
-  const Error e = read_error(path);
+  const Error e = read_cells_error(path);
   EXPECT_EQ(e.location, path.string() + ": layer 1, row 1, cell 1");
   EXPECT_TRUE(contains(e.message, "reserved cell code 10")) << e.message;
 }
@@ -274,7 +274,7 @@ TEST(CellsReader, SummaryStopsAtTheSameErrors) {
 TEST(CellsReader, UnknownContentIsNotACellsFile) {
   ScratchDir dir;
   test::write_text_file(dir / "x.cells", "solid cube\nfacet normal 0 0 1\n");
-  const Error e = read_error(dir / "x.cells");
+  const Error e = read_cells_error(dir / "x.cells");
   EXPECT_TRUE(contains(e.message, "not a cells file")) << e.message;
 }
 
@@ -312,7 +312,7 @@ TEST_P(CellsReaderAsciiLine, IsRefusedNamingTheLine) {
   const AsciiLineCase& c = GetParam();
   ScratchDir dir;
   const auto path = ascii_with_line(dir, c.line, c.replacement);
-  const Error e = read_error(path);
+  const Error e = read_cells_error(path);
   EXPECT_EQ(e.location, path.string() + ":" + std::to_string(c.error_line));
   if (c.message != nullptr) {
     EXPECT_EQ(e.message, c.message);
@@ -374,7 +374,7 @@ TEST(CellsReader, AsciiTruncatedFileSaysWhatIsMissing) {
   std::string text;
   for (std::size_t n = 0; n < 11; ++n) text += lines[n] + "\n";  // stops inside layer 1
   test::write_text_file(path, text);
-  const Error e = read_error(path);
+  const Error e = read_cells_error(path);
   EXPECT_EQ(e.location, path.string() + ":12");
   EXPECT_TRUE(contains(e.message, "file ends inside layer 1: 1 of 3 rows")) << e.message;
 }
@@ -383,7 +383,7 @@ TEST(CellsReader, AsciiExtraContentAfterTheLastLayerIsRejected) {
   ScratchDir dir;
   const auto path = write_small(dir, CellsEncoding::Ascii);
   test::write_text_file(path, read_file(path) + "\n0000000000\n");
-  const Error e = read_error(path);
+  const Error e = read_cells_error(path);
   EXPECT_EQ(e.location, path.string() + ":15");
 }
 
@@ -400,7 +400,7 @@ std::filesystem::path ascii_first_lines(const ScratchDir& dir, std::size_t count
 TEST(CellsReader, AsciiHeaderWithoutLayersSaysHowManyWereExpected) {
   ScratchDir dir;
   const auto path = ascii_first_lines(dir, 5);
-  const Error e = read_error(path);
+  const Error e = read_cells_error(path);
   EXPECT_EQ(e.location, path.string() + ":6");
   EXPECT_EQ(e.message, "file ends after the header; expected 2 layers");
 }
@@ -408,7 +408,7 @@ TEST(CellsReader, AsciiHeaderWithoutLayersSaysHowManyWereExpected) {
 TEST(CellsReader, AsciiFileEndingBetweenLayersSaysHowManyWereRead) {
   ScratchDir dir;
   const auto path = ascii_first_lines(dir, 9);
-  const Error e = read_error(path);
+  const Error e = read_cells_error(path);
   EXPECT_EQ(e.location, path.string() + ":10");
   EXPECT_EQ(e.message, "file ends after 1 of 2 layers");
 }
@@ -428,7 +428,7 @@ TEST(CellsReader, AsciiHeaderValuesAreCheckedAsInBinaryFiles) {
   for (const Case& c : cases) {
     ScratchDir dir;
     const auto path = ascii_with_line(dir, c.line, c.replacement);
-    const Error e = read_error(path);
+    const Error e = read_cells_error(path);
     EXPECT_EQ(e.location, path.string() + ": header") << c.replacement;
     EXPECT_EQ(e.message, c.message);
   }
@@ -441,7 +441,7 @@ TEST(CellsReader, BinaryNonFiniteOriginIsRejected) {
   const unsigned char inf_le[8] = {0, 0, 0, 0, 0, 0, 0xF0, 0x7F};
   for (int b = 0; b < 8; ++b) file[32 + b] = static_cast<char>(inf_le[b]);  // y0 = +inf
   test::write_text_file(path, file);
-  const Error e = read_error(path);
+  const Error e = read_cells_error(path);
   EXPECT_EQ(e.location, path.string());
   EXPECT_EQ(e.message, "origin -1.5 inf 0.125 is not finite");
 }
@@ -454,14 +454,14 @@ TEST(CellsReader, BinaryGridTooLargeToAddressIsRejectedBeforeItsLength) {
   for (int b = 12; b < 20; ++b) file[b] = static_cast<char>(0xFF);  // nx, ny = 2^32 - 1
   file[20] = 5;                                                     // nz = 5
   test::write_text_file(path, file);
-  const Error e = read_error(path);
+  const Error e = read_cells_error(path);
   EXPECT_EQ(e.location, path.string());
   EXPECT_EQ(e.message, "grid 4294967295 x 4294967295 x 5 is too large to address");
 }
 
 TEST(CellsReader, FolderIsNotACellsFile) {
   ScratchDir dir;
-  const Error e = read_error(dir.path());
+  const Error e = read_cells_error(dir.path());
   EXPECT_EQ(e.location, dir.path().string());
   EXPECT_EQ(e.message, "is a folder, not a cells file");
 }
@@ -470,7 +470,7 @@ TEST(CellsReader, FileShorterThanAnyCellsFileIsRejected) {
   ScratchDir dir;
   for (const std::string& bytes : {std::string(), std::string("ST")}) {
     test::write_text_file(dir / "tiny.cells", bytes);
-    const Error e = read_error(dir / "tiny.cells");
+    const Error e = read_cells_error(dir / "tiny.cells");
     EXPECT_EQ(e.location, (dir / "tiny.cells").string());
     EXPECT_EQ(e.message,
               "file of " + std::to_string(bytes.size()) + " bytes is too short to be a cells file");
@@ -563,7 +563,7 @@ TEST(CellsReader, AsciiBadNumbersOfEveryHeaderKeyAndTheLayerIndexNameTheirLine) 
   for (const Case& c : cases) {
     ScratchDir dir;
     const auto path = ascii_with_line(dir, c.line, c.replacement);
-    const Error e = read_error(path);
+    const Error e = read_cells_error(path);
     EXPECT_EQ(e.location, path.string() + ":" + std::to_string(c.line)) << c.replacement;
     EXPECT_EQ(e.message.rfind(std::string("bad number '") + c.token + "'", 0), 0u) << e.message;
   }
@@ -575,7 +575,7 @@ TEST(CellsReader, AsciiHeaderEndingWithoutAKeyIsNamedAfterTheLastLine) {
   const auto lines = testing::lines_of(read_file(path));
   test::write_text_file(path,
                         lines[0] + "\n" + lines[1] + "\n" + lines[2] + "\n" + lines[3] + "\n");
-  const Error e = read_error(path);
+  const Error e = read_cells_error(path);
   EXPECT_EQ(e.location, path.string() + ":5");
   EXPECT_EQ(e.message, "the header has no 'shell' line before the first layer");
 }
@@ -602,7 +602,7 @@ TEST(CellsReader, AsciiLineErrorsNameTheirLineAndSayWhatWasExpected) {
   for (const Case& c : cases) {
     ScratchDir dir;
     const auto path = ascii_with_line(dir, c.line, c.replacement);
-    const Error e = read_error(path);
+    const Error e = read_cells_error(path);
     EXPECT_EQ(e.location, path.string() + ":" + std::to_string(c.line)) << c.replacement;
     EXPECT_EQ(e.message, c.message);
   }
@@ -616,7 +616,7 @@ TEST(CellsReader, AsciiMissingHeaderKeysAreNamedInOrder) {
   for (const Case& c : {Case{2, "grid"}, Case{3, "origin"}, Case{4, "spacing"}}) {
     ScratchDir dir;
     const auto path = ascii_with_line(dir, c.line, "");
-    const Error e = read_error(path);
+    const Error e = read_cells_error(path);
     EXPECT_EQ(e.location, path.string() + ":6");
     EXPECT_EQ(e.message,
               std::string("the header has no '") + c.key + "' line before the first layer");
@@ -657,7 +657,7 @@ TEST(CellsReader, BinaryNonFiniteHeaderValuesAreRejected) {
     std::memcpy(&bits, &c.value, sizeof bits);
     for (int b = 0; b < 8; ++b) file[c.offset + b] = static_cast<char>((bits >> (8 * b)) & 0xFF);
     test::write_text_file(path, file);
-    const Error e = read_error(path);
+    const Error e = read_cells_error(path);
     EXPECT_EQ(e.location, path.string());
     EXPECT_EQ(e.message, c.message);
   }

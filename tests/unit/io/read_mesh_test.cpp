@@ -42,7 +42,7 @@ std::string gzip(std::string_view bytes) {
   return out;
 }
 
-Error read_error(std::string_view bytes, std::string_view name) {
+Error read_mesh_error(std::string_view bytes, std::string_view name) {
   const auto soup = read_mesh_bytes(bytes, name);
   EXPECT_FALSE(soup.has_value()) << name;
   return soup ? Error{} : soup.error();
@@ -60,7 +60,7 @@ TEST(ReadMeshDispatch, ForeignFormatsAreRefusedByTheirExtensionWhateverTheCase) 
     std::string name = "dir.v2/Model";
     name += ext;
     for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    const Error e = read_error("anything", name);
+    const Error e = read_mesh_error("anything", name);
     EXPECT_EQ(e.location, name);
     EXPECT_EQ(e.message, fmt::format("unsupported format: '{}' files; {}", ext, kSupported));
   }
@@ -68,29 +68,29 @@ TEST(ReadMeshDispatch, ForeignFormatsAreRefusedByTheirExtensionWhateverTheCase) 
 
 TEST(ReadMeshDispatch, ZipArchivesAreRefusedByTheirMagicBytes) {
   const std::string zip("PK\x03\x04rest", 8);
-  EXPECT_EQ(read_error(zip, "model.stl").message,
+  EXPECT_EQ(read_mesh_error(zip, "model.stl").message,
             fmt::format("unsupported format: zip archive; {}", kSupported));
   // Named .3mf, or without an extension, a zip archive goes to the 3MF reader.
-  EXPECT_EQ(read_error(zip, "model.3MF").message,
+  EXPECT_EQ(read_mesh_error(zip, "model.3MF").message,
             "not a 3MF file: not a zip archive, or a damaged one (lib3mf: Could not read ZIP "
             "file)");
-  EXPECT_EQ(read_error(zip, "upload").message, read_error(zip, "model.3MF").message);
+  EXPECT_EQ(read_mesh_error(zip, "upload").message, read_mesh_error(zip, "model.3MF").message);
 }
 
 TEST(ReadMeshDispatch, XmlContentIsRefusedAsAmf) {
   for (const std::string_view text : {"<?xml version=\"1.0\"?>\n<amf>", "<amf unit=\"mm\">"}) {
-    EXPECT_EQ(read_error(text, "model").message,
+    EXPECT_EQ(read_mesh_error(text, "model").message,
               fmt::format("unsupported format: XML (AMF?); {}", kSupported));
   }
 }
 
 TEST(ReadMeshDispatch, UnknownContentNamesTheExtensionWhenThereIsOne) {
-  EXPECT_EQ(read_error("hello world\n", "model").message,
+  EXPECT_EQ(read_mesh_error("hello world\n", "model").message,
             fmt::format("unsupported format: content is not STL, OBJ, OFF or PLY; {}", kSupported));
   // A leading dot starts a hidden file's name, not an extension.
-  EXPECT_EQ(read_error("hello world\n", "dir\\.hidden").message,
+  EXPECT_EQ(read_mesh_error("hello world\n", "dir\\.hidden").message,
             fmt::format("unsupported format: content is not STL, OBJ, OFF or PLY; {}", kSupported));
-  EXPECT_EQ(read_error("hello world\n", "dir/model.dat").message,
+  EXPECT_EQ(read_mesh_error("hello world\n", "dir/model.dat").message,
             fmt::format("unsupported format: '.dat' content is not STL, OBJ, OFF or PLY; {}",
                         kSupported));
 }
@@ -102,14 +102,14 @@ TEST(ReadMeshDispatch, PlyMagicNeedsItsLineEnd) {
       "end_header\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n";
   EXPECT_EQ(format_of(ply, "model"), "ply");
   // "plyx" is not the magic line, and without an extension nothing else claims the text.
-  EXPECT_EQ(read_error("plyx\n", "model").message,
+  EXPECT_EQ(read_mesh_error("plyx\n", "model").message,
             fmt::format("unsupported format: content is not STL, OBJ, OFF or PLY; {}", kSupported));
-  EXPECT_EQ(read_error("ply", "model").message,
+  EXPECT_EQ(read_mesh_error("ply", "model").message,
             fmt::format("unsupported format: content is not STL, OBJ, OFF or PLY; {}", kSupported));
 }
 
 TEST(ReadMeshDispatch, ThePlyExtensionSelectsThePlyReaderWithoutTheMagic) {
-  const Error e = read_error("solidity\n", "model.ply");
+  const Error e = read_mesh_error("solidity\n", "model.ply");
   EXPECT_EQ(e.location, "model.ply:1");
   EXPECT_EQ(e.message, "not a PLY file: the first line is not 'ply'");
 }
@@ -122,23 +122,23 @@ TEST(ReadMeshDispatch, OffIsRecognisedAfterBlankLinesAndComments) {
                       "model"),
             "off");
   // A keyword of more than 8 characters, or glued to other text, is not OFF.
-  EXPECT_EQ(read_error("STCN4nOFFX\n", "model").message,
+  EXPECT_EQ(read_mesh_error("STCN4nOFFX\n", "model").message,
             fmt::format("unsupported format: content is not STL, OBJ, OFF or PLY; {}", kSupported));
-  EXPECT_EQ(read_error("# only a comment", "model").message,
+  EXPECT_EQ(read_mesh_error("# only a comment", "model").message,
             fmt::format("unsupported format: content is not STL, OBJ, OFF or PLY; {}", kSupported));
 }
 
 TEST(ReadMeshDispatch, AnOffKeywordAtTheEndOfTheTextIsOff) {
-  const Error e = read_error("OFF", "model");
+  const Error e = read_mesh_error("OFF", "model");
   EXPECT_EQ(e.location, "model:1");
   EXPECT_EQ(e.message, "file ends where the vertex count was expected (truncated?)");
   // Eight characters ending in OFF but glued to more text are no keyword.
-  EXPECT_EQ(read_error("12345OFFx 3 1 0\n", "model").message,
+  EXPECT_EQ(read_mesh_error("12345OFFx 3 1 0\n", "model").message,
             fmt::format("unsupported format: content is not STL, OBJ, OFF or PLY; {}", kSupported));
 }
 
 TEST(ReadMeshDispatch, HalfAGzipMagicIsNoGzip) {
-  EXPECT_EQ(read_error("\x1f\x8c not gzip", "model").message,
+  EXPECT_EQ(read_mesh_error("\x1f\x8c not gzip", "model").message,
             fmt::format("unsupported format: content is not STL, OBJ, OFF or PLY; {}", kSupported));
 }
 
@@ -147,32 +147,32 @@ TEST(ReadMeshDispatch, ObjIsRecognisedByAVertexStatementInItsFirstLines) {
             "obj");
   std::string late(64, '\n');
   late += kObjTriangle;
-  EXPECT_EQ(read_error(late, "model").message,
+  EXPECT_EQ(read_mesh_error(late, "model").message,
             fmt::format("unsupported format: content is not STL, OBJ, OFF or PLY; {}", kSupported));
-  EXPECT_EQ(read_error("# none\nv", "model").message,
+  EXPECT_EQ(read_mesh_error("# none\nv", "model").message,
             fmt::format("unsupported format: content is not STL, OBJ, OFF or PLY; {}", kSupported));
-  EXPECT_EQ(read_error("vx", "model").message,
+  EXPECT_EQ(read_mesh_error("vx", "model").message,
             fmt::format("unsupported format: content is not STL, OBJ, OFF or PLY; {}", kSupported));
 }
 
 TEST(ReadMeshGzip, TarArchivesAreRefused) {
-  EXPECT_EQ(read_error(gzip("tar data"), "models.TGZ").message,
+  EXPECT_EQ(read_mesh_error(gzip("tar data"), "models.TGZ").message,
             fmt::format("unsupported format: tar archive; {}", kSupported));
 }
 
 TEST(ReadMeshGzip, GzipInsideGzipIsRefused) {
-  EXPECT_EQ(read_error(gzip(gzip(kObjTriangle)), "model.obj.gz").message,
+  EXPECT_EQ(read_mesh_error(gzip(gzip(kObjTriangle)), "model.obj.gz").message,
             fmt::format("unsupported format: gzip inside gzip; {}", kSupported));
 }
 
 TEST(ReadMeshGzip, AnEmptyMemberIsAnEmptyFile) {
-  const Error e = read_error(gzip(""), "model.stl.gz");
+  const Error e = read_mesh_error(gzip(""), "model.stl.gz");
   EXPECT_EQ(e.location, "model.stl.gz");
   EXPECT_EQ(e.message, "empty file (gzip of 0 bytes)");
 }
 
 TEST(ReadMeshGzip, TheInnerReadersErrorNamesTheCompressedFile) {
-  const Error e = read_error(gzip("v 0 0\n"), "model.obj.gz");
+  const Error e = read_mesh_error(gzip("v 0 0\n"), "model.obj.gz");
   EXPECT_EQ(e.location, "model.obj.gz:1");
   EXPECT_EQ(e.message, "vertex has 2 coordinates, expected 3");
 }
@@ -190,7 +190,7 @@ TEST(ReadMeshGzip, ConcatenatedMembersAreOneFile) {
 TEST(ReadMeshGzip, CorruptDataIsAnErrorSayingWhere) {
   // A gzip header, then a deflate block of the reserved type 3.
   const std::string bytes("\x1f\x8b\x08\x00\x00\x00\x00\x00\x00\x03\xff\xff\xff\xff", 14);
-  const Error e = read_error(bytes, "model.stl.gz");
+  const Error e = read_mesh_error(bytes, "model.stl.gz");
   EXPECT_EQ(e.code, ErrorCode::BadInput);
   EXPECT_EQ(e.location, "model.stl.gz");
   EXPECT_EQ(e.message, "corrupt gzip data after 11 compressed bytes: invalid block type");

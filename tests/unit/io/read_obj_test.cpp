@@ -12,14 +12,14 @@ namespace {
 
 constexpr std::string_view kVertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
 
-TriangleSoup read_ok(std::string_view text, const ReadLimits& limits = {}) {
+TriangleSoup read_obj_ok(std::string_view text, const ReadLimits& limits = {}) {
   auto soup = detail::read_obj_bytes(text, "m.obj", limits);
   EXPECT_TRUE(soup.has_value()) << soup.error().to_string();
   return soup ? *soup : TriangleSoup{};
 }
 
-void expect_error(std::string_view text, std::string_view location, std::string_view message,
-                  const ReadLimits& limits = {}) {
+void expect_obj_error(std::string_view text, std::string_view location, std::string_view message,
+                      const ReadLimits& limits = {}) {
   const auto soup = detail::read_obj_bytes(text, "m.obj", limits);
   ASSERT_FALSE(soup.has_value()) << text;
   EXPECT_EQ(soup.error().code, ErrorCode::BadInput);
@@ -29,8 +29,8 @@ void expect_error(std::string_view text, std::string_view location, std::string_
 
 TEST(ReadObj, StatementsThatAreNotGeometryAreSkippedSilently) {
   const auto soup =
-      read_ok("mtllib m.mtl\no part\ng group\ns 1\nusemtl steel\nvt 0 0\nvn 0 0 1\nvp 0.5\n" +
-              std::string(kVertices) + "l 1 2\np 3\nfo 1 2 3\n");
+      read_obj_ok("mtllib m.mtl\no part\ng group\ns 1\nusemtl steel\nvt 0 0\nvn 0 0 1\nvp 0.5\n" +
+                  std::string(kVertices) + "l 1 2\np 3\nfo 1 2 3\n");
   ASSERT_EQ(soup.triangles.size(), 1u);
   EXPECT_EQ(soup.triangles[0][2], (Vec3{0, 1, 0}));
   EXPECT_TRUE(soup.diagnostics.empty());
@@ -38,19 +38,19 @@ TEST(ReadObj, StatementsThatAreNotGeometryAreSkippedSilently) {
 
 TEST(ReadObj, UnknownStatementsAreQuotedShortAndVisible) {
   const std::string name(50, 'w');
-  const auto soup = read_ok(std::string(kVertices) + name + " 1\nbad\x01\x7f 2\nf 1 2 3\n");
+  const auto soup = read_obj_ok(std::string(kVertices) + name + " 1\nbad\x01\x7f 2\nf 1 2 3\n");
   ASSERT_EQ(soup.diagnostics.size(), 1u);
   EXPECT_EQ(soup.diagnostics[0].message,
             "m.obj:4: statement '" + std::string(40, 'w') +
                 "...' ignored (only v and f are read) (2 times in all; also at line 5)");
-  const auto control = read_ok(std::string(kVertices) + "bad\x01\x7f 2\nf 1 2 3\n");
+  const auto control = read_obj_ok(std::string(kVertices) + "bad\x01\x7f 2\nf 1 2 3\n");
   ASSERT_EQ(control.diagnostics.size(), 1u);
   EXPECT_EQ(control.diagnostics[0].message,
             "m.obj:4: statement 'bad\\x01\\x7f' ignored (only v and f are read)");
 }
 
 TEST(ReadObj, EveryKindOfLineEndEndsAStatement) {
-  const auto soup = read_ok("v 0 0 0\r\nv 1 0 0\rv 0 1 0\nf 1 2 3");
+  const auto soup = read_obj_ok("v 0 0 0\r\nv 1 0 0\rv 0 1 0\nf 1 2 3");
   ASSERT_EQ(soup.triangles.size(), 1u);
   EXPECT_EQ(soup.triangles[0][1], (Vec3{1, 0, 0}));
 }
@@ -59,7 +59,7 @@ TEST(ReadObj, ContinuationsJoinLinesWhateverFollowsTheBackslash) {
   // A backslash followed by blanks, then a line of a backslash alone: lines 4 to 6 are one
   // face. A continuation onto an empty line (7) and one at the end of the file (9) end their
   // faces after two corners.
-  const auto soup = read_ok(std::string(kVertices) + "f 1 \\  \n\\\n2 3\nf 3 2 \\\n\nf 2 3 \\");
+  const auto soup = read_obj_ok(std::string(kVertices) + "f 1 \\  \n\\\n2 3\nf 3 2 \\\n\nf 2 3 \\");
   ASSERT_EQ(soup.triangles.size(), 1u);
   EXPECT_EQ(soup.triangles[0][1], (Vec3{1, 0, 0}));
   ASSERT_EQ(soup.diagnostics.size(), 1u);
@@ -69,30 +69,30 @@ TEST(ReadObj, ContinuationsJoinLinesWhateverFollowsTheBackslash) {
 }
 
 TEST(ReadObj, AVertexWithTooFewCoordinatesSaysHowMany) {
-  expect_error("v\n", "m.obj:1", "vertex has 0 coordinates, expected 3");
-  expect_error("v 1\n", "m.obj:1", "vertex has 1 coordinate, expected 3");
+  expect_obj_error("v\n", "m.obj:1", "vertex has 0 coordinates, expected 3");
+  expect_obj_error("v 1\n", "m.obj:1", "vertex has 1 coordinate, expected 3");
 }
 
 TEST(ReadObj, ACornerWithoutAVertexIndexIsAnError) {
-  expect_error(std::string(kVertices) + "f 1 /2 3\n", "m.obj:4",
-               "face corner '/2' has no vertex index");
+  expect_obj_error(std::string(kVertices) + "f 1 /2 3\n", "m.obj:4",
+                   "face corner '/2' has no vertex index");
 }
 
 TEST(ReadObj, FacetsOverTheLimitAreAnErrorOnTheirLine) {
   ReadLimits limits;
   limits.max_triangles = 2;
-  expect_error(std::string(kVertices) + "v 1 1 0\nf 1 2 3\nf 1 2 3 4\n", "m.obj:6",
-               "more than the limit of 2 facets", limits);
+  expect_obj_error(std::string(kVertices) + "v 1 1 0\nf 1 2 3\nf 1 2 3 4\n", "m.obj:6",
+                   "more than the limit of 2 facets", limits);
 }
 
 TEST(ReadObj, LinesOverTheLimitAreRefused) {
   ReadLimits limits;
   limits.max_line_bytes = 16;
-  expect_error(std::string(kVertices) + "f 1 2 3 # a comment longer than that\n", "m.obj:4",
-               "line longer than the limit of 16 bytes", limits);
+  expect_obj_error(std::string(kVertices) + "f 1 2 3 # a comment longer than that\n", "m.obj:4",
+                   "line longer than the limit of 16 bytes", limits);
   // Continued lines that are short each but long together.
-  expect_error(std::string(kVertices) + "f 1 2 \\\n3 1 2 \\\n3 1 2 \\\n3\n", "m.obj:6",
-               "line longer than the limit of 16 bytes", limits);
+  expect_obj_error(std::string(kVertices) + "f 1 2 \\\n3 1 2 \\\n3 1 2 \\\n3\n", "m.obj:6",
+                   "line longer than the limit of 16 bytes", limits);
 }
 
 }  // namespace

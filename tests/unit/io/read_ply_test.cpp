@@ -33,15 +33,15 @@ std::string triangle_header() {
       "element face 1\nproperty list uchar int vertex_indices\n");
 }
 
-Error read_error(std::string_view bytes, const ReadLimits& limits = {}) {
+Error read_ply_error(std::string_view bytes, const ReadLimits& limits = {}) {
   const auto soup = detail::read_ply_bytes(bytes, "part.ply", limits);
   EXPECT_FALSE(soup.has_value());
   return soup ? Error{} : soup.error();
 }
 
-void expect_error(std::string_view bytes, std::string_view location, std::string_view message,
-                  const ReadLimits& limits = {}) {
-  const Error e = read_error(bytes, limits);
+void expect_ply_error(std::string_view bytes, std::string_view location, std::string_view message,
+                      const ReadLimits& limits = {}) {
+  const Error e = read_ply_error(bytes, limits);
   EXPECT_EQ(e.code, ErrorCode::BadInput);
   EXPECT_EQ(e.location, location);
   EXPECT_EQ(e.message, message);
@@ -89,13 +89,13 @@ TEST(ReadPly, ReadsBothByteOrdersAlike) {
 }
 
 TEST(ReadPly, HeaderWithoutEndHeaderIsAnError) {
-  expect_error("ply\nformat ascii 1.0\nelement vertex 3\n", "part.ply:3",
-               "PLY header has no end_header line");
+  expect_ply_error("ply\nformat ascii 1.0\nelement vertex 3\n", "part.ply:3",
+                   "PLY header has no end_header line");
 }
 
 TEST(ReadPly, FirstLineMustBePly) {
-  expect_error("plyx\nformat ascii 1.0\nend_header\n", "part.ply:1",
-               "not a PLY file: the first line is not 'ply'");
+  expect_ply_error("plyx\nformat ascii 1.0\nend_header\n", "part.ply:1",
+                   "not a PLY file: the first line is not 'ply'");
 }
 
 TEST(ReadPly, HeaderLineOverTheLimitIsAnError) {
@@ -105,37 +105,37 @@ TEST(ReadPly, HeaderLineOverTheLimitIsAnError) {
   std::string header = "ply\nformat ascii 1.0\ncomment ";
   header.append(20, 'c');
   header.append("\nend_header\n");
-  expect_error(header, "part.ply:3", "line longer than the limit of 16 bytes", limits);
+  expect_ply_error(header, "part.ply:3", "line longer than the limit of 16 bytes", limits);
 }
 
 TEST(ReadPly, UnknownFormatIsNamed) {
-  expect_error("ply\nformat utf8 1.0\nend_header\n", "part.ply:2", "unknown PLY format 'utf8'");
+  expect_ply_error("ply\nformat utf8 1.0\nend_header\n", "part.ply:2", "unknown PLY format 'utf8'");
 }
 
 TEST(ReadPly, HeaderWithoutFormatLineIsAnError) {
-  expect_error("ply\nelement vertex 0\nend_header\n", "part.ply:3",
-               "PLY header has no format line");
+  expect_ply_error("ply\nelement vertex 0\nend_header\n", "part.ply:3",
+                   "PLY header has no format line");
 }
 
 TEST(ReadPly, ElementNeedsANameAndACount) {
-  expect_error(ascii_header("element vertex\n"), "part.ply:3",
-               "PLY element line needs a name and a count");
+  expect_ply_error(ascii_header("element vertex\n"), "part.ply:3",
+                   "PLY element line needs a name and a count");
 }
 
 TEST(ReadPly, ElementCountMustBeAWholeNumber) {
-  const Error e = read_error(ascii_header("element vertex 3.0\n"));
+  const Error e = read_ply_error(ascii_header("element vertex 3.0\n"));
   EXPECT_EQ(e.location, "part.ply:3");
   EXPECT_EQ(e.message.rfind("bad number '3.0'", 0), 0u) << e.message;
 }
 
 TEST(ReadPly, AnElementLineWithoutANameIsAnError) {
-  expect_error(ascii_header("element\n"), "part.ply:3",
-               "PLY element line needs a name and a count");
+  expect_ply_error(ascii_header("element\n"), "part.ply:3",
+                   "PLY element line needs a name and a count");
 }
 
 TEST(ReadPly, AListCountTypeThatIsNoTypeIsAnError) {
-  expect_error(ascii_header("element face 1\nproperty list quad int vertex_indices\n"),
-               "part.ply:4", "PLY list property needs an integer count type");
+  expect_ply_error(ascii_header("element face 1\nproperty list quad int vertex_indices\n"),
+                   "part.ply:4", "PLY list property needs an integer count type");
 }
 
 TEST(ReadPly, BlankHeaderLinesAreSkippedAndTheLastLineNeedsNoLineEnd) {
@@ -150,56 +150,57 @@ TEST(ReadPly, BlankHeaderLinesAreSkippedAndTheLastLineNeedsNoLineEnd) {
 }
 
 TEST(ReadPly, PropertyBeforeAnyElementIsAnError) {
-  expect_error(ascii_header("property float x\n"), "part.ply:3", "PLY property before any element");
+  expect_ply_error(ascii_header("property float x\n"), "part.ply:3",
+                   "PLY property before any element");
 }
 
 TEST(ReadPly, ListCountTypeMustBeAnInteger) {
-  expect_error(ascii_header("element face 1\nproperty list float int vertex_indices\n"),
-               "part.ply:4", "PLY list property needs an integer count type");
+  expect_ply_error(ascii_header("element face 1\nproperty list float int vertex_indices\n"),
+                   "part.ply:4", "PLY list property needs an integer count type");
 }
 
 TEST(ReadPly, UnknownPropertyTypeIsNamed) {
-  expect_error(ascii_header("element vertex 1\nproperty quad x\n"), "part.ply:4",
-               "unknown PLY property type 'quad'");
+  expect_ply_error(ascii_header("element vertex 1\nproperty quad x\n"), "part.ply:4",
+                   "unknown PLY property type 'quad'");
 }
 
 TEST(ReadPly, VertexElementNeedsXYAndZ) {
-  expect_error(ascii_header("element vertex 1\nproperty float x\nproperty float y\n") + "0 0\n",
-               "part.ply", "PLY vertex element lacks an x, y or z property");
+  expect_ply_error(ascii_header("element vertex 1\nproperty float x\nproperty float y\n") + "0 0\n",
+                   "part.ply", "PLY vertex element lacks an x, y or z property");
 }
 
 TEST(ReadPly, FaceElementNeedsAVertexIndexList) {
-  expect_error(ascii_header("element vertex 0\nproperty float x\nproperty float y\nproperty "
-                            "float z\nelement face 1\nproperty int material\n") +
-                   "0\n",
-               "part.ply", "PLY face element has no vertex_indices list");
+  expect_ply_error(ascii_header("element vertex 0\nproperty float x\nproperty float y\nproperty "
+                                "float z\nelement face 1\nproperty int material\n") +
+                       "0\n",
+                   "part.ply", "PLY face element has no vertex_indices list");
 }
 
 TEST(ReadPly, TruncatedAsciiBodyNamesTheItemAndLine) {
-  expect_error(triangle_header() + "0 0 0\n1 0 0\n", "part.ply:12",
-               "PLY vertex 2 of 3: file ends early (truncated?)");
+  expect_ply_error(triangle_header() + "0 0 0\n1 0 0\n", "part.ply:12",
+                   "PLY vertex 2 of 3: file ends early (truncated?)");
 }
 
 TEST(ReadPly, TruncatedBinaryBodyNamesTheItemAndByte) {
   std::string bytes = binary_triangle(false);
   const std::size_t header = bytes.size() - 9 * 4 - 1 - 3 * 4;
   bytes.resize(header + 4 * 4);  // vertex 0 and x of vertex 1
-  expect_error(bytes, "part.ply: byte " + std::to_string(header + 16),
-               "PLY vertex 1 of 3: file ends early (truncated?)");
+  expect_ply_error(bytes, "part.ply: byte " + std::to_string(header + 16),
+                   "PLY vertex 1 of 3: file ends early (truncated?)");
 }
 
 TEST(ReadPly, ListLongerThanTheFileIsAnError) {
-  expect_error(triangle_header() + "0 0 0\n1 0 0\n0 1 0\n200 0 1 2\n", "part.ply:13",
-               "PLY face 0: list of 200 entries, more than the file holds");
+  expect_ply_error(triangle_header() + "0 0 0\n1 0 0\n0 1 0\n200 0 1 2\n", "part.ply:13",
+                   "PLY face 0: list of 200 entries, more than the file holds");
 }
 
 TEST(ReadPly, NegativeFaceIndexIsAnError) {
-  expect_error(triangle_header() + "0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", "part.ply:13",
-               "PLY face 0 uses the negative vertex index -1");
+  expect_ply_error(triangle_header() + "0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", "part.ply:13",
+                   "PLY face 0 uses the negative vertex index -1");
 }
 
 TEST(ReadPly, BadNumberInTheBodyGivesTheNumberMessage) {
-  const Error e = read_error(triangle_header() + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n");
+  const Error e = read_ply_error(triangle_header() + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(e.location, "part.ply:11");
   EXPECT_EQ(e.message.rfind("bad number 'nan'", 0), 0u) << e.message;
 }
@@ -212,7 +213,7 @@ TEST(ReadPly, FacetsOverTheLimitAreAnError) {
           "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
           "element face 2\nproperty list uchar int vertex_indices\n") +
       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n";
-  expect_error(bytes, "part.ply:14", "more than the limit of 1 facets", limits);
+  expect_ply_error(bytes, "part.ply:14", "more than the limit of 1 facets", limits);
 }
 
 std::string strip_file(std::string_view strip) {
@@ -247,8 +248,8 @@ TEST(ReadPly, StripJoinsAreSkippedWithANote) {
 }
 
 TEST(ReadPly, StripIndexBelowMinusOneIsAnError) {
-  expect_error(strip_file("4 0 1 -2 3"), "part.ply:14",
-               "PLY strip uses the negative vertex index -2");
+  expect_ply_error(strip_file("4 0 1 -2 3"), "part.ply:14",
+                   "PLY strip uses the negative vertex index -2");
 }
 
 TEST(ReadPly, BytesAfterTheLastBinaryElementAreAWarning) {
@@ -406,7 +407,7 @@ TEST(ReadPly, AVertexElementWithoutXYOrZIsAnErrorInEveryEncoding) {
       }
       elements += "property list uchar float x_list\n";  // a list named x is not the coordinate
       const PlyFile file = make_ply(encoding, elements, {});
-      expect_error(file.bytes, "part.ply", "PLY vertex element lacks an x, y or z property");
+      expect_ply_error(file.bytes, "part.ply", "PLY vertex element lacks an x, y or z property");
     }
   }
 }
@@ -420,8 +421,8 @@ TEST(ReadPly, StripsAndFacesWithoutAnIndexListAreErrorsInEveryEncoding) {
                                "corners\nproperty int vertex_indices\n",
                                kXyzFloat, element),
                    {});
-      expect_error(file.bytes, "part.ply",
-                   fmt::format("PLY {} element has no vertex_indices list", element));
+      expect_ply_error(file.bytes, "part.ply",
+                       fmt::format("PLY {} element has no vertex_indices list", element));
     }
   }
 }
@@ -432,12 +433,12 @@ TEST(ReadPly, AListCountBelowZeroOrBeyondTheFileIsAnErrorInEveryEncoding) {
   for (const std::string_view encoding : kEncodings) {
     const PlyFile negative =
         make_ply(encoding, elements, with_triangle({{{"int8", -1}, {"int", 0}, {"int", 1}}}));
-    expect_error(negative.bytes, negative.where(3, 37),
-                 "PLY face 0: list of -1 entries, more than the file holds");
+    expect_ply_error(negative.bytes, negative.where(3, 37),
+                     "PLY face 0: list of -1 entries, more than the file holds");
     const PlyFile long_list =
         make_ply(encoding, elements, with_triangle({{{"int8", 100}, {"int", 0}, {"int", 1}}}));
-    expect_error(long_list.bytes, long_list.where(3, 37),
-                 "PLY face 0: list of 100 entries, more than the file holds");
+    expect_ply_error(long_list.bytes, long_list.where(3, 37),
+                     "PLY face 0: list of 100 entries, more than the file holds");
   }
 }
 
@@ -446,7 +447,8 @@ TEST(ReadPly, AFileEndingBeforeAListCountIsTruncatedInEveryEncoding) {
       "element vertex 3\n{}element face 1\nproperty list uchar int vertex_indices\n", kXyzFloat);
   for (const std::string_view encoding : kEncodings) {
     const PlyFile file = make_ply(encoding, elements, triangle_vertices());
-    expect_error(file.bytes, file.where(3, 36), "PLY face 0 of 1: file ends early (truncated?)");
+    expect_ply_error(file.bytes, file.where(3, 36),
+                     "PLY face 0 of 1: file ends early (truncated?)");
   }
 }
 
@@ -458,10 +460,10 @@ TEST(ReadPly, IndicesThatAreNoWholeNumberBelowTwoToThe63AreErrorsInEveryEncoding
       const PlyFile file = make_ply(
           encoding, elements,
           with_triangle({{{"uchar", 3}, {"double", 0}, {"double", index}, {"double", 2}}}));
-      expect_error(file.bytes, file.where(3, 36 + 1 + 16),
-                   fmt::format("PLY face 0: vertex index {} is not a whole number of magnitude "
-                               "below 2^63",
-                               index));
+      expect_ply_error(file.bytes, file.where(3, 36 + 1 + 16),
+                       fmt::format("PLY face 0: vertex index {} is not a whole number of magnitude "
+                                   "below 2^63",
+                                   index));
     }
   }
 }
@@ -472,8 +474,8 @@ TEST(ReadPly, BinaryNegativeFaceIndexIsAnError) {
       fmt::format("element vertex 3\n{}element face 1\nproperty list uchar int vertex_indices\n",
                   kXyzFloat),
       with_triangle({{{"uchar", 3}, {"int", 0}, {"int", -4}, {"int", 2}}}));
-  expect_error(file.bytes, file.where(3, 36 + 1 + 12),
-               "PLY face 0 uses the negative vertex index -4");
+  expect_ply_error(file.bytes, file.where(3, 36 + 1 + 12),
+                   "PLY face 0 uses the negative vertex index -4");
 }
 
 TEST(ReadPly, StripsJoinsOtherElementsAndTheFacetLimitInEveryEncoding) {
@@ -506,14 +508,14 @@ TEST(ReadPly, StripsJoinsOtherElementsAndTheFacetLimitInEveryEncoding) {
 
     ReadLimits limits;
     limits.max_triangles = 1;
-    expect_error(file.bytes, file.where(5, 4 * 12 + 1 + 4 * 9), "more than the limit of 1 facets",
-                 limits);
+    expect_ply_error(file.bytes, file.where(5, 4 * 12 + 1 + 4 * 9),
+                     "more than the limit of 1 facets", limits);
 
     std::vector<std::vector<PlyValue>> bad = rows;
     bad.back()[6].value = -3;
     const PlyFile negative = make_ply(encoding, elements, bad);
-    expect_error(negative.bytes, negative.where(5, 4 * 12 + 1 + 4 * 9),
-                 "PLY strip uses the negative vertex index -3");
+    expect_ply_error(negative.bytes, negative.where(5, 4 * 12 + 1 + 4 * 9),
+                     "PLY strip uses the negative vertex index -3");
   }
 }
 
@@ -534,9 +536,9 @@ TEST(ReadPly, ABinaryNonFiniteCoordinateIsAnErrorNamingTheFace) {
         fmt::format("element vertex 3\n{}element face 1\nproperty list uchar int vertex_indices\n",
                     kXyzFloat),
         rows);
-    expect_error(file.bytes, "part.ply: face 0",
-                 "PLY vertex 1 has a non-finite coordinate " + shown +
-                     "; NaN and infinity cannot be sliced");
+    expect_ply_error(file.bytes, "part.ply: face 0",
+                     "PLY vertex 1 has a non-finite coordinate " + shown +
+                         "; NaN and infinity cannot be sliced");
   }
 }
 

@@ -34,7 +34,7 @@ struct EncodedCase {
   Utf16Order order;
 };
 
-std::string case_name(const testing::TestParamInfo<EncodedCase>& info) {
+std::string encoded_case_name(const ::testing::TestParamInfo<EncodedCase>& info) {
   return test::sanitize_test_name(info.param.corpus_path) +
          (info.param.order == Utf16Order::LittleEndian ? "_LE" : "_BE");
 }
@@ -53,7 +53,7 @@ std::vector<EncodedCase> encoded_cases() {
   return cases;
 }
 
-class Utf16CorpusCopy : public testing::TestWithParam<EncodedCase> {};
+class Utf16CorpusCopy : public ::testing::TestWithParam<EncodedCase> {};
 
 TEST_P(Utf16CorpusCopy, ReadsTheSameTrianglesAsTheOriginal) {
   const std::filesystem::path path = test::corpus_dir() / GetParam().corpus_path;
@@ -76,7 +76,8 @@ TEST_P(Utf16CorpusCopy, ReadsTheSameTrianglesAsTheOriginal) {
                 " text, decoded before reading");
 }
 
-INSTANTIATE_TEST_SUITE_P(Corpus, Utf16CorpusCopy, testing::ValuesIn(encoded_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(Corpus, Utf16CorpusCopy, ::testing::ValuesIn(encoded_cases()),
+                         encoded_case_name);
 
 TEST(TextEncoding, Utf8ByteOrderMarkIsDroppedInEveryTextFormat) {
   for (const test::TextMeshFormat format : test::all_text_mesh_formats()) {

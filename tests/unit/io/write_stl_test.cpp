@@ -217,7 +217,7 @@ TEST(StlBytesAscii, EveryNumberReadsBackToTheSameFloat) {
 // --- write_stl and read_mesh
 // -----------------------------------------------------------------
 
-class WriteStlRoundTrip : public testing::TestWithParam<StlEncoding> {};
+class WriteStlRoundTrip : public ::testing::TestWithParam<StlEncoding> {};
 
 TEST_P(WriteStlRoundTrip, TetrahedronReadsBackBitIdentical) {
   TempDir dir;
@@ -276,8 +276,8 @@ TEST_P(WriteStlRoundTrip, KeepsTheFacetOrder) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Encodings, WriteStlRoundTrip,
-                         testing::Values(StlEncoding::Binary, StlEncoding::Ascii),
-                         [](const testing::TestParamInfo<StlEncoding>& info) {
+                         ::testing::Values(StlEncoding::Binary, StlEncoding::Ascii),
+                         [](const ::testing::TestParamInfo<StlEncoding>& info) {
                            return info.param == StlEncoding::Binary ? "Binary" : "Ascii";
                          });
 

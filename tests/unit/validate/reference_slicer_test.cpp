@@ -17,11 +17,13 @@
 #include "strata/validate/validation_json.hpp"
 #include "strata/validate/validation_text.hpp"
 #include "support/mesh_builders.hpp"
+#include "support/validated_model.hpp"
 #include "validate/reference_slicer_internal.hpp"
 
 namespace strata::validate {
 namespace {
 
+using test::validated_model;
 using test::welded_box;
 
 SliceOptions cells_of(double d, std::optional<Vec3> origin = Vec3{0, 0, 0}) {
@@ -34,14 +36,6 @@ SliceOptions cells_of(double d, std::optional<Vec3> origin = Vec3{0, 0, 0}) {
   return options;
 }
 
-ValidationReport validate(const IndexedMesh& mesh, const SliceOptions& options,
-                          const ValidateOptions& vopts = {}) {
-  const GridSpec grid = make_grid(mesh.bounds(), options.grid).value();
-  auto report = validate_model(mesh, grid, options, vopts);
-  EXPECT_TRUE(report.has_value()) << (report ? "" : report.error().to_string());
-  return report ? std::move(report).value() : ValidationReport{};
-}
-
 double diagonal(const IndexedMesh& mesh) {
   const Bbox3 b = mesh.bounds();
   return std::hypot(b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z);
@@ -49,7 +43,7 @@ double diagonal(const IndexedMesh& mesh) {
 
 TEST(ReferenceSlicer, AgreesWithBothPathsOnAnIcosphere) {
   const IndexedMesh sphere = weld_vertices(mesh::make_sphere(10.0, 3));
-  const ValidationReport r = validate(sphere, cells_of(0.7, std::nullopt));
+  const ValidationReport r = validated_model(sphere, cells_of(0.7, std::nullopt));
   const ReferenceSlicerFigures& f = r.reference;
   ASSERT_TRUE(f.ran) << f.reason;
   EXPECT_EQ(f.skipped, ReferenceSkip::None);
@@ -69,7 +63,7 @@ TEST(ReferenceSlicer, AgreesWithBothPathsOnTheRing) {
   const auto soup = io::read_mesh(std::string(STRATA_DATA_DIR) + "/ring.stl");
   ASSERT_TRUE(soup.has_value()) << soup.error().to_string();
   const IndexedMesh ring = weld_vertices(*soup);
-  const ValidationReport r = validate(ring, cells_of(0.5, std::nullopt));
+  const ValidationReport r = validated_model(ring, cells_of(0.5, std::nullopt));
   const ReferenceSlicerFigures& f = r.reference;
   ASSERT_TRUE(f.ran) << f.reason;
   EXPECT_EQ(f.layers_compared, 20u);
@@ -88,7 +82,7 @@ TEST(ReferenceSlicer, GivesTheExactPathsPointsOnAGenericPlane) {
   // Exact intersection points rounded once to the nearest double, like the exact path: the two
   // sets of loops have the same edges.
   const IndexedMesh sphere = weld_vertices(mesh::make_sphere(10.0, 2));
-  const ValidationReport r = validate(sphere, cells_of(0.9, std::nullopt));
+  const ValidationReport r = validated_model(sphere, cells_of(0.9, std::nullopt));
   ASSERT_TRUE(r.reference.ran) << r.reference.reason;
   for (const ReferenceLayerComparison& l : r.reference.layers) {
     EXPECT_EQ(l.area_method_exact, AreaMethod::Identical) << "layer " << l.layer;
@@ -106,7 +100,7 @@ TEST(ReferenceSlicer, SkipsANonManifoldModelAndSaysWhy) {
       soup.triangles.push_back({part->corner(f, 0), part->corner(f, 1), part->corner(f, 2)});
     }
   }
-  const ValidationReport r = validate(weld_vertices(soup), cells_of(1.0));
+  const ValidationReport r = validated_model(weld_vertices(soup), cells_of(1.0));
   EXPECT_FALSE(r.reference.ran);
   EXPECT_EQ(r.reference.skipped, ReferenceSkip::NonManifold);
   EXPECT_NE(r.reference.reason.find("non-manifold"), std::string::npos) << r.reference.reason;
@@ -118,7 +112,7 @@ TEST(ReferenceSlicer, SkipsANonManifoldModelAndSaysWhy) {
 TEST(ReferenceSlicer, SkipsAnOpenModel) {
   IndexedMesh m = welded_box({0, 0, 0}, {2, 2, 2});
   m.triangles.pop_back();
-  const ValidationReport r = validate(m, cells_of(1.0));
+  const ValidationReport r = validated_model(m, cells_of(1.0));
   EXPECT_FALSE(r.reference.ran);
   EXPECT_EQ(r.reference.skipped, ReferenceSkip::NotClosed);
   EXPECT_NE(r.reference.reason.find("border edges"), std::string::npos) << r.reference.reason;
@@ -127,7 +121,7 @@ TEST(ReferenceSlicer, SkipsAnOpenModel) {
 TEST(ReferenceSlicer, SkipsAnInconsistentlyOrientedModel) {
   IndexedMesh m = welded_box({0, 0, 0}, {2, 2, 2});
   std::swap(m.triangles[0][1], m.triangles[0][2]);
-  const ValidationReport r = validate(m, cells_of(1.0));
+  const ValidationReport r = validated_model(m, cells_of(1.0));
   EXPECT_FALSE(r.reference.ran);
   EXPECT_EQ(r.reference.skipped, ReferenceSkip::Inconsistent) << r.reference.reason;
 }
@@ -135,7 +129,8 @@ TEST(ReferenceSlicer, SkipsAnInconsistentlyOrientedModel) {
 TEST(ReferenceSlicer, SkipsAModelOverTheFacetCap) {
   ValidateOptions vopts;
   vopts.reference_max_facets = 11;
-  const ValidationReport r = validate(welded_box({0, 0, 0}, {2, 2, 2}), cells_of(1.0), vopts);
+  const ValidationReport r =
+      validated_model(welded_box({0, 0, 0}, {2, 2, 2}), cells_of(1.0), vopts);
   EXPECT_FALSE(r.reference.ran);
   EXPECT_EQ(r.reference.skipped, ReferenceSkip::TooManyFacets);
   EXPECT_EQ(r.reference.max_facets, 11u);
@@ -145,7 +140,8 @@ TEST(ReferenceSlicer, SkipsAModelOverTheFacetCap) {
 TEST(ReferenceSlicer, IsOffWhenAskedTo) {
   ValidateOptions vopts;
   vopts.reference_slicer = false;
-  const ValidationReport r = validate(welded_box({0, 0, 0}, {2, 2, 2}), cells_of(1.0), vopts);
+  const ValidationReport r =
+      validated_model(welded_box({0, 0, 0}, {2, 2, 2}), cells_of(1.0), vopts);
   EXPECT_FALSE(r.reference.ran);
   EXPECT_EQ(r.reference.skipped, ReferenceSkip::Off);
 }
@@ -154,7 +150,7 @@ TEST(ReferenceSlicer, CountsALayerWhosePlaneHoldsAVertex) {
   // The apex (0, 0, 2.5) lies on the plane of layer 2; no other vertex is on a plane.
   const IndexedMesh tetra =
       weld_vertices(mesh::make_tetrahedron({0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, 2.5}));
-  const ValidationReport r = validate(tetra, cells_of(1.0));
+  const ValidationReport r = validated_model(tetra, cells_of(1.0));
   const ReferenceSlicerFigures& f = r.reference;
   ASSERT_TRUE(f.ran) << f.reason;
   ASSERT_EQ(f.layers.size(), 3u);
@@ -170,7 +166,7 @@ TEST(ReferenceSlicer, CountsALayerWhosePlaneHoldsAVertex) {
 TEST(ReferenceSlicer, CountsTheBottomFacetOnAPlaneAsALegitimateDifference) {
   // The bottom face z = 0.5 lies on the plane of layer 0: CGAL returns its outline, strata counts
   // its vertices above the plane and sees nothing there.
-  const ValidationReport r = validate(welded_box({0, 0, 0.5}, {3, 2, 3}), cells_of(1.0));
+  const ValidationReport r = validated_model(welded_box({0, 0, 0.5}, {3, 2, 3}), cells_of(1.0));
   const ReferenceSlicerFigures& f = r.reference;
   ASSERT_TRUE(f.ran) << f.reason;
   ASSERT_EQ(f.layers.size(), 3u);
@@ -188,7 +184,7 @@ TEST(ReferenceSlicer, CountsTheBottomFacetOnAPlaneAsALegitimateDifference) {
 TEST(ReferenceSlicer, AgreesWhereTheTopFacetLiesOnAPlane) {
   // The top face z = 2.5 lies on the plane of layer 2: CGAL orients its outline by the side
   // faces below it, strata sees the section just below the plane: the same rectangle.
-  const ValidationReport r = validate(welded_box({0, 0, 0}, {3, 2, 2.5}), cells_of(1.0));
+  const ValidationReport r = validated_model(welded_box({0, 0, 0}, {3, 2, 2.5}), cells_of(1.0));
   const ReferenceSlicerFigures& f = r.reference;
   ASSERT_TRUE(f.ran) << f.reason;
   ASSERT_EQ(f.layers.size(), 3u);
@@ -215,7 +211,7 @@ TEST(ReferenceSlicer, GivesACounterClockwiseLoopAroundTheMaterial) {
 }
 
 TEST(ReferenceSlicer, WritesItsSectionInTheJsonReport) {
-  const ValidationReport r = validate(welded_box({0, 0, 0}, {3, 2, 2}), cells_of(1.0));
+  const ValidationReport r = validated_model(welded_box({0, 0, 0}, {3, 2, 2}), cells_of(1.0));
   const nlohmann::json j = nlohmann::json::parse(validation_json(r));
   const nlohmann::json& ref = j.at("reference_slicer");
   EXPECT_TRUE(ref.at("ran").get<bool>());
@@ -241,7 +237,7 @@ TEST(ReferenceSlicer, RefusesAModelWhoseFacetsAllRepeatACorner) {
 TEST(ReferenceSlicer, LeavesOutAFacetWithARepeatedCornerAndSlicesTheRest) {
   IndexedMesh m = welded_box({0, 0, 0}, {2, 2, 2});
   m.triangles.push_back({0, 1, 1});
-  const ValidationReport r = validate(m, cells_of(1.0));
+  const ValidationReport r = validated_model(m, cells_of(1.0));
   ASSERT_TRUE(r.reference.ran) << r.reference.reason;
   EXPECT_EQ(r.reference.degenerate_facets_dropped, 1u);
   EXPECT_EQ(r.reference.facets, 13u);
@@ -257,7 +253,7 @@ TEST(ReferenceSlicer, OverlaysOnlyEveryNthLayerThatDiffersAtRoundingLevel) {
   const IndexedMesh sphere = weld_vertices(mesh::make_sphere(10.0, 3));
   ValidateOptions vopts;
   vopts.max_overlay_layers = 1;
-  const ValidationReport r = validate(sphere, cells_of(0.7, std::nullopt), vopts);
+  const ValidationReport r = validated_model(sphere, cells_of(0.7, std::nullopt), vopts);
   const ReferenceSlicerFigures& f = r.reference;
   ASSERT_TRUE(f.ran) << f.reason;
   EXPECT_GT(f.layers_overlay_skipped, 0u);

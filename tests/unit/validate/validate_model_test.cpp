@@ -10,10 +10,12 @@
 #include "strata/validate/validation_json.hpp"
 #include "strata/validate/validation_text.hpp"
 #include "support/mesh_builders.hpp"
+#include "support/validated_model.hpp"
 
 namespace strata::validate {
 namespace {
 
+using test::validated_model;
 using test::welded_box;
 
 SliceOptions unit_cells(FillRule rule = FillRule::NonZero) {
@@ -26,16 +28,9 @@ SliceOptions unit_cells(FillRule rule = FillRule::NonZero) {
   return options;
 }
 
-ValidationReport validate(const IndexedMesh& mesh, const SliceOptions& options) {
-  const GridSpec grid = make_grid(mesh.bounds(), options.grid).value();
-  auto report = validate_model(mesh, grid, options);
-  EXPECT_TRUE(report.has_value()) << (report ? "" : report.error().to_string());
-  return report ? std::move(report).value() : ValidationReport{};
-}
-
 TEST(ValidateModel, FindsNoDifferenceOnABox) {
   // Faces on a cell-centre plane (x = 6.5), a scanline (y = 4.5) and a layer plane (z = 3.5).
-  const ValidationReport r = validate(welded_box({0, 0, 0}, {6.5, 4.5, 3.5}), unit_cells());
+  const ValidationReport r = validated_model(welded_box({0, 0, 0}, {6.5, 4.5, 3.5}), unit_cells());
   EXPECT_FALSE(r.exact_error.has_value()) << r.exact_error->to_string();
   EXPECT_TRUE(r.cells_agree());
   EXPECT_EQ(r.cells_differing, 0u);
@@ -47,7 +42,7 @@ TEST(ValidateModel, FindsNoDifferenceOnABox) {
 }
 
 TEST(ValidateModel, MeasuresTheBox) {
-  const ValidationReport r = validate(welded_box({0, 0, 0}, {6, 4, 3}), unit_cells());
+  const ValidationReport r = validated_model(welded_box({0, 0, 0}, {6, 4, 3}), unit_cells());
   EXPECT_DOUBLE_EQ(r.model.mesh_volume_mm3, 72.0);
   EXPECT_DOUBLE_EQ(r.fast.cell_volume_mm3, 72.0);
   EXPECT_DOUBLE_EQ(r.exact.cell_volume_mm3, 72.0);
@@ -68,7 +63,7 @@ TEST(ValidateModel, AgreesOnOverlappingShellsUnderBothRules) {
   m.vertices.insert(m.vertices.end(), b.vertices.begin(), b.vertices.end());
   for (auto t : b.triangles) m.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
   for (const FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
-    const ValidationReport r = validate(m, unit_cells(rule));
+    const ValidationReport r = validated_model(m, unit_cells(rule));
     EXPECT_TRUE(r.cells_agree()) << to_string(rule) << ": " << validation_text(r);
     EXPECT_EQ(r.max_symmetric_difference_mm2, 0.0) << to_string(rule);
   }
@@ -80,7 +75,7 @@ TEST(ValidateModel, ListsTheCellsTheScanOffsetChanges) {
   // row 4 (6 x 3 cells) and turns the 4 interior cells of row 3 into shell cells.
   SliceOptions options = unit_cells();
   options.scan_offset_mm = 0.0001;
-  const ValidationReport r = validate(welded_box({0, 0, 0}, {6, 4.5, 3}), options);
+  const ValidationReport r = validated_model(welded_box({0, 0, 0}, {6, 4.5, 3}), options);
   ASSERT_TRUE(r.scan_offset.measured);
   EXPECT_EQ(r.scan_offset.cells_changed, 22u);
   ASSERT_EQ(r.scan_offset.cells.size(), 22u);
@@ -128,7 +123,7 @@ TEST(ValidateModel, StopsWithAnInternalErrorWhenTheComparisonFails) {
 }
 
 TEST(ValidationJson, SaysTheCellsAgree) {
-  const ValidationReport r = validate(welded_box({0, 0, 0}, {3, 2, 2}), unit_cells());
+  const ValidationReport r = validated_model(welded_box({0, 0, 0}, {3, 2, 2}), unit_cells());
   const nlohmann::json j = nlohmann::json::parse(validation_json(r));
   EXPECT_EQ(j.at("verdict"), "agree");
   EXPECT_EQ(j.at("cells").at("differing"), 0);
@@ -138,7 +133,7 @@ TEST(ValidationJson, SaysTheCellsAgree) {
 }
 
 TEST(ValidationText, SaysTheCellsAgree) {
-  const ValidationReport r = validate(welded_box({0, 0, 0}, {3, 2, 2}), unit_cells());
+  const ValidationReport r = validated_model(welded_box({0, 0, 0}, {3, 2, 2}), unit_cells());
   const std::string text = validation_text(r);
   EXPECT_NE(text.find("AGREE"), std::string::npos) << text;
   EXPECT_NE(text.find("exact/fast"), std::string::npos) << text;

@@ -15,7 +15,7 @@ using nlohmann::json;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-ValidationReport agreeing_report() {
+ValidationReport agreeing_json_report() {
   ValidationReport r;
   r.grid = GridSpec{-1, 0, 0.5, 0.5, 0.5, 0.25, 4, 3, 2};
   r.fast.ran = true;
@@ -38,7 +38,7 @@ json parsed(const ValidationReport& r) {
 }
 
 TEST(ValidationJson, GivesTheGridAndTheOptions) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_json_report();
   r.options.fill_rule = FillRule::EvenOdd;
   r.options.shell_mode = ShellMode::Layers;
   r.options.shell_mm = 0.75;
@@ -51,7 +51,7 @@ TEST(ValidationJson, GivesTheGridAndTheOptions) {
 }
 
 TEST(ValidationJson, GivesTheVerdict) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_json_report();
   EXPECT_EQ(parsed(r).at("verdict"), "agree");
   r.cells_differing = 3;
   EXPECT_EQ(parsed(r).at("verdict"), "cells-differ");
@@ -60,7 +60,7 @@ TEST(ValidationJson, GivesTheVerdict) {
 }
 
 TEST(ValidationJson, NamesTheExactPathsErrorByItsCode) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_json_report();
   EXPECT_TRUE(parsed(r).at("exact").at("error").is_null());
   r.exact_error = Error{ErrorCode::BadInput, "non-finite coordinate", "box.stl: facet 3"};
   EXPECT_EQ(parsed(r).at("exact").at("error"), json::parse(R"({"code": "bad-input",
@@ -72,7 +72,7 @@ TEST(ValidationJson, NamesTheExactPathsErrorByItsCode) {
 }
 
 TEST(ValidationJson, GivesBothPathsAndTheSoup) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_json_report();
   r.fast.class_counts = {10, 8, 6};
   r.fast.open_chains = 2;
   r.fast.solid_bounds.add({0, 0, 0});
@@ -95,7 +95,7 @@ TEST(ValidationJson, GivesBothPathsAndTheSoup) {
 }
 
 TEST(ValidationJson, WritesNoTimeRatioWhenAPathDidNotRun) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_json_report();
   r.exact.ran = false;
   const json j = parsed(r);
   EXPECT_EQ(j.at("time_ratio_exact_over_fast"), 0.0);
@@ -103,7 +103,7 @@ TEST(ValidationJson, WritesNoTimeRatioWhenAPathDidNotRun) {
 }
 
 TEST(ValidationJson, ListsTheDifferingCellsWithTheirClassesAndReasons) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_json_report();
   r.cells_differing = 5;
   r.differing_by_reason = {1, 1, 1, 1, 1};
   r.differences = {{0, 1, 1, CellClass::Empty, CellClass::Interior, DifferenceReason::ScanOffset},
@@ -124,7 +124,7 @@ TEST(ValidationJson, ListsTheDifferingCellsWithTheirClassesAndReasons) {
 }
 
 TEST(ValidationJson, WritesTheContoursOfEveryLayerWithInfiniteDistancesAsNull) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_json_report();
   r.max_symmetric_difference_mm2 = 0.25;
   r.total_symmetric_difference_mm2 = 0.5;
   r.max_hausdorff_mm = 0.125;
@@ -159,7 +159,7 @@ TEST(ValidationJson, WritesTheContoursOfEveryLayerWithInfiniteDistancesAsNull) {
 }
 
 TEST(ValidationJson, ListsTheCellsTheScanOffsetChanges) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_json_report();
   r.scan_offset.measured = true;
   r.scan_offset.offset_mm = 0.001;
   r.scan_offset.cells_changed = 4;
@@ -170,7 +170,7 @@ TEST(ValidationJson, ListsTheCellsTheScanOffsetChanges) {
 }
 
 TEST(ValidationJson, GivesTheModelsFiguresAndVolumeErrors) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_json_report();
   r.model.surface_area_mm2 = 24.0;
   r.model.mesh_bounds.add({0, 0, 0});
   r.model.mesh_bounds.add({2, 2, 2});
@@ -188,7 +188,7 @@ TEST(ValidationJson, GivesTheModelsFiguresAndVolumeErrors) {
 }
 
 TEST(ValidationJson, WritesWhatWasNotMeasuredAsNull) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_json_report();
   r.model.mesh_volume_mm3 = 0.0;  // no volume to compare with
   r.model.shell.cells = 4;        // none measured
   const json model = parsed(r).at("model");
@@ -204,7 +204,7 @@ TEST(ValidationJson, WritesWhatWasNotMeasuredAsNull) {
 }
 
 TEST(ValidationJson, GivesTheReferenceSlicerWithItsLayers) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_json_report();
   ReferenceSlicerFigures& f = r.reference;
   f.ran = true;
   f.skipped = ReferenceSkip::None;
@@ -250,7 +250,7 @@ TEST(ValidationJson, GivesTheReferenceSlicerWithItsLayers) {
 }
 
 TEST(ValidationJson, SaysWhyTheReferenceSlicerDidNotRun) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_json_report();
   r.reference.skipped = ReferenceSkip::TooManyFacets;
   r.reference.reason = "300 facets, over the cap of 200";
   const json j = parsed(r).at("reference_slicer");
@@ -261,7 +261,7 @@ TEST(ValidationJson, SaysWhyTheReferenceSlicerDidNotRun) {
 }
 
 TEST(ValidationJson, GivesTheDiagnosticsWithTheirSeverity) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_json_report();
   r.diagnostics.push_back({Severity::Warning, "stl.trailing_bytes", "box.stl: 3 trailing bytes"});
   r.diagnostics.push_back({Severity::Info, "validate.boundary_cells", "not measured"});
   EXPECT_EQ(parsed(r).at("diagnostics"), json::parse(R"([

@@ -9,10 +9,10 @@
 namespace strata::validate {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kInfiniteDistance = std::numeric_limits<double>::infinity();
 
 /// A 4 x 3 x 2 grid of 1 mm cells from the origin, both paths run, cells agreeing.
-ValidationReport agreeing_report() {
+ValidationReport agreeing_text_report() {
   ValidationReport r;
   r.grid = GridSpec{0, 0, 0, 1, 1, 1, 4, 3, 2};
   r.options.shell_mm = 0.5;
@@ -32,7 +32,7 @@ bool has_line(const std::string& text, const std::string& line) {
 }
 
 TEST(ValidationText, StartsWithTheGridAndTheRule) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   r.options.fill_rule = FillRule::EvenOdd;
   r.options.shell_mode = ShellMode::Layers;
   r.options.scan_offset_mm = 0.25;
@@ -45,7 +45,7 @@ TEST(ValidationText, StartsWithTheGridAndTheRule) {
 }
 
 TEST(ValidationText, SaysTheCellsAgreeWithTheRatioOfTheTimes) {
-  const std::string text = validation_text(agreeing_report());
+  const std::string text = validation_text(agreeing_text_report());
   EXPECT_TRUE(has_line(text, "cells     AGREE: 24 cells compared in 2 layers, none differs"))
       << text;
   EXPECT_TRUE(has_line(text,
@@ -55,7 +55,7 @@ TEST(ValidationText, SaysTheCellsAgreeWithTheRatioOfTheTimes) {
 }
 
 TEST(ValidationText, SaysTheCellsWereNotValidatedWhenTheExactPathStopped) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   r.exact.ran = false;
   r.exact_error = Error{ErrorCode::BadInput, "non-finite coordinate", "box.stl: facet 3"};
   r.cells_differing = 1234;
@@ -75,7 +75,7 @@ TEST(ValidationText, SaysTheCellsWereNotValidatedWhenTheExactPathStopped) {
 }
 
 TEST(ValidationText, SaysNothingOfEarlierLayersWhenTheExactPathStoppedAtOnce) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   r.exact_error = Error{ErrorCode::Internal, "exact path: out of memory", ""};
   r.layers_compared = 0;
   const std::string text = validation_text(r);
@@ -87,7 +87,7 @@ TEST(ValidationText, SaysNothingOfEarlierLayersWhenTheExactPathStoppedAtOnce) {
 }
 
 TEST(ValidationText, ListsTwentyDifferingCellsByReasonAndCountsTheRest) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   r.cells_differing = 1001;
   r.differing_by_reason[static_cast<std::size_t>(DifferenceReason::Shell)] = 1;
   r.differing_by_reason[static_cast<std::size_t>(DifferenceReason::NearDegenerate)] = 1000;
@@ -115,7 +115,7 @@ TEST(ValidationText, ListsTwentyDifferingCellsByReasonAndCountsTheRest) {
 }
 
 TEST(ValidationText, ListsEveryDifferingCellWhenThereAreFewOfThem) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   r.cells_differing = 1;
   r.differing_by_reason[static_cast<std::size_t>(DifferenceReason::Unexplained)] = 1;
   r.differences.push_back(
@@ -129,7 +129,7 @@ TEST(ValidationText, ListsEveryDifferingCellWhenThereAreFewOfThem) {
 }
 
 TEST(ValidationText, GivesTheContourFiguresAndTheWorstFiveLayersInOrder) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   r.layers_compared = 7;
   r.layers_with_different_counts = 1;
   r.max_symmetric_difference_mm2 = 0.25;
@@ -153,7 +153,7 @@ TEST(ValidationText, GivesTheContourFiguresAndTheWorstFiveLayersInOrder) {
     if (k == 5) {
       l.exact.open_chains = 1;
       l.area_method = AreaMethod::AreaOnly;
-      l.hausdorff_mm = kInf;
+      l.hausdorff_mm = kInfiniteDistance;
     }
     r.layers.push_back(l);
   }
@@ -185,9 +185,9 @@ TEST(ValidationText, GivesTheContourFiguresAndTheWorstFiveLayersInOrder) {
 }
 
 TEST(ValidationText, SaysWhichLayersHaveOpenChainsAndHowTheLoopsWereOverlaid) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   r.layers_with_open_chains = 2;
-  r.max_hausdorff_all_mm = kInf;
+  r.max_hausdorff_all_mm = kInfiniteDistance;
   r.layers_arrangement = 1;
   r.layers_area_only = 1;
   r.layers_overlay_skipped = 3;
@@ -205,7 +205,7 @@ TEST(ValidationText, SaysWhichLayersHaveOpenChainsAndHowTheLoopsWereOverlaid) {
 }
 
 TEST(ValidationText, NamesTheOverlaysAloneWhenNoneFailedOrWasSkipped) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   r.layers_arrangement = 2;
   EXPECT_TRUE(has_line(validation_text(r), "          loops differ in 2 layers (exact overlay)"));
   r.layers_arrangement = 0;
@@ -216,7 +216,7 @@ TEST(ValidationText, NamesTheOverlaysAloneWhenNoneFailedOrWasSkipped) {
 }
 
 TEST(ValidationText, SaysTheReferenceSlicerWasOffOrWhyItDidNotRun) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   EXPECT_TRUE(has_line(validation_text(r),
                        "reference slicer (CGAL Polygon_mesh_slicer, exact kernel): off"));
   r.reference.skipped = ReferenceSkip::NotClosed;
@@ -247,7 +247,7 @@ ReferenceSlicerFigures reference_run() {
 }
 
 TEST(ValidationText, GivesTheReferenceSlicersFiguresWhereNoVertexIsOnAPlane) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   r.reference = reference_run();
   const std::string text = validation_text(r);
   EXPECT_TRUE(
@@ -272,7 +272,7 @@ TEST(ValidationText, GivesTheReferenceSlicersFiguresWhereNoVertexIsOnAPlane) {
 }
 
 TEST(ValidationText, GivesTheReferenceSlicersLayersAtVerticesOutlinesAndDroppedFacets) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   r.reference = reference_run();
   r.reference.layers_outlined_exact = 2;
   r.reference.layers_outlined_fast = 3;
@@ -309,7 +309,7 @@ TEST(ValidationText, GivesTheReferenceSlicersLayersAtVerticesOutlinesAndDroppedF
 }
 
 TEST(ValidationText, SaysWhereTheReferenceSlicerStopped) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   r.reference = reference_run();
   r.reference.ran = false;
   r.reference.skipped = ReferenceSkip::Failed;
@@ -321,7 +321,7 @@ TEST(ValidationText, SaysWhereTheReferenceSlicerStopped) {
 }
 
 TEST(ValidationText, ComparesTheVolumesWithTheMeshVolumesMagnitude) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   // An inverted shell: its signed volume is negative, its cells are not.
   r.model.mesh_volume_mm3 = -8.0;
   r.fast.cell_volume_mm3 = 10.0;
@@ -341,7 +341,7 @@ TEST(ValidationText, ComparesTheVolumesWithTheMeshVolumesMagnitude) {
 }
 
 TEST(ValidationText, GivesTheBoundsOrNone) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   r.model.mesh_bounds.add({0, 0, 0});
   r.model.mesh_bounds.add({2, 1.5, 1});
   const std::string text = validation_text(r);
@@ -350,7 +350,7 @@ TEST(ValidationText, GivesTheBoundsOrNone) {
 }
 
 TEST(ValidationText, GivesTheSurfaceToShellDistanceWhenMeasured) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   EXPECT_EQ(validation_text(r).find("surface-to-shell"), std::string::npos);
   r.model.surface_to_boundary_mm = 0.75;
   r.model.surface_samples = 4321;
@@ -361,7 +361,7 @@ TEST(ValidationText, GivesTheSurfaceToShellDistanceWhenMeasured) {
 }
 
 TEST(ValidationText, GivesTheShellThicknessAndHowManyCellsWereMeasured) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   r.model.asked_shell_mm = 0.5;
   EXPECT_TRUE(has_line(validation_text(r),
                        "shell     asked t = 0.5 mm; no interior cell touches the shell"));
@@ -380,7 +380,7 @@ TEST(ValidationText, GivesTheShellThicknessAndHowManyCellsWereMeasured) {
 }
 
 TEST(ValidationText, ListsTheCellsTheScanOffsetChanges) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   EXPECT_EQ(validation_text(r).find("offset    "), std::string::npos) << "not measured";
   r.scan_offset.measured = true;
   r.scan_offset.offset_mm = 0.001;
@@ -399,7 +399,7 @@ TEST(ValidationText, ListsTheCellsTheScanOffsetChanges) {
 }
 
 TEST(ValidationText, GivesTheExactPathsSoupAndTheNotes) {
-  ValidationReport r = agreeing_report();
+  ValidationReport r = agreeing_text_report();
   r.exact_soup.points_merged = 1;
   r.exact_soup.polygons_removed = 2;
   r.exact_soup.points_duplicated = 3;
