@@ -12,7 +12,7 @@ import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync
 import http from 'node:http';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { acquireBrowser, newContext, releaseBrowser } from './browser.mjs';
+import { acquireBrowser, newContext, releaseBrowser, VIEWPORT } from './browser.mjs';
 
 const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const artifacts = path.resolve(process.env.STRATA_TEST_ARTIFACTS || path.join(repo, 'build', 'web-artifacts'));
@@ -24,9 +24,6 @@ const unparseable = path.join(sharedDir, 'corpus', 'openscad', 'tests', 'data', 
 // 16 non-manifold edges and 356 self-intersecting facets (the corpus manifest).
 const defective = path.join(sharedDir, 'corpus', 'assimp-testmodels', 'models', 'STL', '3DSMaxExport.STL');
 const MAX_UPLOAD_MB = 4;
-// A common laptop screen. Chromium draws WebGL in software here (SwiftShader, 4x multisampled):
-// its cost goes with the pixels: at 1400 x 950 this suite took a third more CPU time.
-const VIEWPORT = { width: 1280, height: 800 };
 
 let browser;
 let server; // { process, base, jobsDir, exited }

@@ -16,7 +16,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
-import { acquireBrowser, newContext, releaseBrowser } from './browser.mjs';
+import { acquireBrowser, newContext, releaseBrowser, VIEWPORT } from './browser.mjs';
 import { buildTemplate, insertData } from '../../web/build.mjs';
 import { CANVAS_BACKGROUND, CELL_RGB } from '../../web/src/palette.js';
 import { classify, fixtureJson, WORDS } from './make_fixture.mjs';
@@ -31,9 +31,6 @@ const models = (process.env.STRATA_VIEW_MODELS || path.join(repo, 'data', 'ring.
   .map((s) => path.resolve(repo, s));
 const sliceArgs = (process.env.STRATA_VIEW_ARGS || '--cell 0.5 --layer 0.5').split(/\s+/).filter(Boolean);
 
-// A common laptop screen. Chromium draws WebGL in software here (SwiftShader, 4x multisampled):
-// its cost goes with the pixels: at 1400 x 950 this suite took a third more CPU time.
-const VIEWPORT = { width: 1280, height: 800 };
 const BACKGROUND = hexRgb(CANVAS_BACKGROUND);
 const CLASS_COLOURS = { empty: CELL_RGB[0], interior: CELL_RGB[1], boundary: CELL_RGB[3], background: BACKGROUND };
 
