@@ -14,6 +14,7 @@
 #include "support/corpus.hpp"
 #include "support/mesh_reading.hpp"
 #include "support/read_file.hpp"
+#include "support/read_result.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 #include "support/three_mf_package.hpp"
@@ -43,11 +44,7 @@ Bbox3 bounds(const TriangleSoup& soup) {
   return box;
 }
 
-Error read_3mf_error(const fs::path& path) {
-  const auto soup = read_mesh(path);
-  EXPECT_FALSE(soup) << path << " was read";
-  return soup ? Error{} : soup.error();
-}
+Error read_3mf_error(const fs::path& path) { return test::error_of(read_mesh(path), path.string()); }
 
 TEST(Read3mf, BuildItemAndNestedComponentTransformsApply) {
   const test::TempDir tmp("3mf");

@@ -13,6 +13,7 @@
 
 #include "strata/export/cells_writer.hpp"
 #include "support/mesh_reading.hpp"
+#include "support/read_result.hpp"
 #include "support/sink_runs.hpp"
 #include "support/text_meshes.hpp"
 
@@ -59,11 +60,9 @@ void expect_small_header(const CellsHeader& h) {
 
 /// Reads `path`, expecting a BadInput error; returns it.
 Error read_cells_error(const std::filesystem::path& path) {
-  auto read = read_cells(path);
-  EXPECT_FALSE(read) << path << " was read without error";
-  if (read) return {};
-  EXPECT_EQ(read.error().code, ErrorCode::BadInput);
-  return read.error();
+  const Error error = test::error_of(read_cells(path), path.string());
+  EXPECT_EQ(error.code, ErrorCode::BadInput);
+  return error;
 }
 
 TEST(CellsReader, BinaryRoundTripGivesTheWrittenClasses) {

@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "support/read_result.hpp"
 #include "support/temp_dir.hpp"
 
 namespace strata::io {
@@ -43,9 +44,7 @@ std::string gzip(std::string_view bytes) {
 }
 
 Error read_mesh_error(std::string_view bytes, std::string_view name) {
-  const auto soup = read_mesh_bytes(bytes, name);
-  EXPECT_FALSE(soup.has_value()) << name;
-  return soup ? Error{} : soup.error();
+  return test::error_of(read_mesh_bytes(bytes, name), name);
 }
 
 std::string format_of(std::string_view bytes, std::string_view name) {

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "io/read_mesh_internal.hpp"
+#include "support/read_result.hpp"
 
 namespace strata::io {
 namespace {
@@ -13,18 +14,12 @@ namespace {
 constexpr std::string_view kVertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
 
 TriangleSoup read_obj_ok(std::string_view text, const ReadLimits& limits = {}) {
-  auto soup = detail::read_obj_bytes(text, "m.obj", limits);
-  EXPECT_TRUE(soup.has_value()) << soup.error().to_string();
-  return soup ? *soup : TriangleSoup{};
+  return test::value_of(detail::read_obj_bytes(text, "m.obj", limits), text);
 }
 
 void expect_obj_error(std::string_view text, std::string_view location, std::string_view message,
                       const ReadLimits& limits = {}) {
-  const auto soup = detail::read_obj_bytes(text, "m.obj", limits);
-  ASSERT_FALSE(soup.has_value()) << text;
-  EXPECT_EQ(soup.error().code, ErrorCode::BadInput);
-  EXPECT_EQ(soup.error().location, location);
-  EXPECT_EQ(soup.error().message, message);
+  test::expect_bad_input(detail::read_obj_bytes(text, "m.obj", limits), location, message, text);
 }
 
 TEST(ReadObj, StatementsThatAreNotGeometryAreSkippedSilently) {

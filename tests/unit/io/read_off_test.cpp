@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "io/read_mesh_internal.hpp"
+#include "support/read_result.hpp"
 
 namespace strata::io {
 namespace {
@@ -14,18 +15,12 @@ namespace {
 const Vec3 kA{0, 0, 0}, kB{1, 0, 0}, kC{0, 1, 0};
 
 TriangleSoup read_off_ok(std::string_view text, const ReadLimits& limits = {}) {
-  auto soup = detail::read_off_bytes(text, "m.off", limits);
-  EXPECT_TRUE(soup.has_value()) << soup.error().to_string();
-  return soup ? *soup : TriangleSoup{};
+  return test::value_of(detail::read_off_bytes(text, "m.off", limits), text);
 }
 
 void expect_off_error(std::string_view text, std::string_view location, std::string_view message,
                       const ReadLimits& limits = {}) {
-  const auto soup = detail::read_off_bytes(text, "m.off", limits);
-  ASSERT_FALSE(soup.has_value()) << text;
-  EXPECT_EQ(soup.error().code, ErrorCode::BadInput);
-  EXPECT_EQ(soup.error().location, location);
-  EXPECT_EQ(soup.error().message, message);
+  test::expect_bad_input(detail::read_off_bytes(text, "m.off", limits), location, message, text);
 }
 
 TEST(ReadOff, EveryKindOfLineEndAndCommentSeparatesTokens) {

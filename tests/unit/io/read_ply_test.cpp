@@ -15,6 +15,7 @@
 
 #include "io/read_mesh_internal.hpp"
 #include "support/mesh_reading.hpp"
+#include "support/read_result.hpp"
 
 namespace strata::io {
 namespace {
@@ -34,17 +35,13 @@ std::string triangle_header() {
 }
 
 Error read_ply_error(std::string_view bytes, const ReadLimits& limits = {}) {
-  const auto soup = detail::read_ply_bytes(bytes, "part.ply", limits);
-  EXPECT_FALSE(soup.has_value());
-  return soup ? Error{} : soup.error();
+  return test::error_of(detail::read_ply_bytes(bytes, "part.ply", limits), "part.ply");
 }
 
 void expect_ply_error(std::string_view bytes, std::string_view location, std::string_view message,
                       const ReadLimits& limits = {}) {
-  const Error e = read_ply_error(bytes, limits);
-  EXPECT_EQ(e.code, ErrorCode::BadInput);
-  EXPECT_EQ(e.location, location);
-  EXPECT_EQ(e.message, message);
+  test::expect_bad_input(detail::read_ply_bytes(bytes, "part.ply", limits), location, message,
+                         "part.ply");
 }
 
 template <class T>
