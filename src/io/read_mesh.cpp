@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/huge_pages.hpp"
+#include "io/ascii_case_internal.hpp"
 #include "io/read_mesh_internal.hpp"
 #include "io/stl_format_internal.hpp"
 
@@ -29,13 +30,7 @@ Error bad_input(std::string_view name, std::string message) {
   return Error{ErrorCode::BadInput, std::move(message), std::string(name)};
 }
 
-std::string lower_ascii(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) {
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-  }
-  return out;
-}
+using detail::lower_ascii;
 
 bool ends_with(std::string_view text, std::string_view suffix) {
   return text.size() >= suffix.size() && text.substr(text.size() - suffix.size()) == suffix;

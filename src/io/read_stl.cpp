@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/huge_pages.hpp"
+#include "io/ascii_case_internal.hpp"
 #include "io/little_endian.hpp"
 #include "io/read_mesh_internal.hpp"
 #include "io/stl_format_internal.hpp"
@@ -30,6 +31,7 @@ using detail::is_blank;
 using detail::next_token;
 
 using detail::DiagnosticTally;
+using detail::iequals_ascii;
 using detail::kStlBinaryFacetBytes;
 using detail::kStlBinaryHeaderBytes;
 using detail::StlBinaryFit;
@@ -236,36 +238,25 @@ std::string_view trim(std::string_view text) {
   return text;
 }
 
-/// Case-insensitive comparison with a lower-case ASCII keyword.
-bool iequals(std::string_view token, std::string_view lower) {
-  if (token.size() != lower.size()) return false;
-  for (std::size_t i = 0; i < token.size(); ++i) {
-    char c = token[i];
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-    if (c != lower[i]) return false;
-  }
-  return true;
-}
-
 enum class Keyword { Solid, EndSolid, Facet, Outer, Vertex, EndLoop, EndFacet, Other };
 
 Keyword classify(std::string_view token) {
   // Dispatch on length first: this runs once per line of multi-megabyte files.
   switch (token.size()) {
     case 5:
-      if (iequals(token, "solid")) return Keyword::Solid;
-      if (iequals(token, "facet")) return Keyword::Facet;
-      if (iequals(token, "outer")) return Keyword::Outer;
+      if (iequals_ascii(token, "solid")) return Keyword::Solid;
+      if (iequals_ascii(token, "facet")) return Keyword::Facet;
+      if (iequals_ascii(token, "outer")) return Keyword::Outer;
       break;
     case 6:
-      if (iequals(token, "vertex")) return Keyword::Vertex;
+      if (iequals_ascii(token, "vertex")) return Keyword::Vertex;
       break;
     case 7:
-      if (iequals(token, "endloop")) return Keyword::EndLoop;
+      if (iequals_ascii(token, "endloop")) return Keyword::EndLoop;
       break;
     case 8:
-      if (iequals(token, "endsolid")) return Keyword::EndSolid;
-      if (iequals(token, "endfacet")) return Keyword::EndFacet;
+      if (iequals_ascii(token, "endsolid")) return Keyword::EndSolid;
+      if (iequals_ascii(token, "endfacet")) return Keyword::EndFacet;
       break;
     default:
       break;
@@ -315,7 +306,7 @@ void AsciiStlParser::begin_facet(std::string_view rest) {
   facet_normal_ = Vec3{};
   const std::string_view after_facet = trim(rest);
   const std::string_view word = next_token(rest);
-  const bool has_keyword = iequals(word, "normal");
+  const bool has_keyword = iequals_ascii(word, "normal");
   const std::string_view values = has_keyword ? trim(rest) : after_facet;
   std::array<double, 3> n{};
   bool ok = has_keyword;
@@ -439,7 +430,7 @@ Result<TriangleSoup> AsciiStlParser::parse() {
           continue;
         case Keyword::Outer: {
           const std::string_view loop = next_token(rest);
-          if (!iequals(loop, "loop")) {
+          if (!iequals_ascii(loop, "loop")) {
             note_trailing("outer",
                           std::string_view(loop.data(), line.data() + line.size() - loop.data()));
           } else {
@@ -567,8 +558,9 @@ bool starts_with_solid(std::string_view bytes) {
   if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
   std::size_t i = 0;
   while (i < bytes.size() && (is_blank(bytes[i]) || bytes[i] == '\n' || bytes[i] == '\r')) ++i;
-  return iequals(bytes.substr(i, 5), "solid") && (i + 5 == bytes.size() || is_blank(bytes[i + 5]) ||
-                                                  bytes[i + 5] == '\n' || bytes[i + 5] == '\r');
+  return iequals_ascii(bytes.substr(i, 5), "solid") &&
+         (i + 5 == bytes.size() || is_blank(bytes[i + 5]) || bytes[i + 5] == '\n' ||
+          bytes[i + 5] == '\r');
 }
 
 }  // namespace detail

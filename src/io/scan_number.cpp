@@ -15,20 +15,15 @@
 #include <system_error>
 #include <utility>
 
+#include "io/ascii_case_internal.hpp"
+
 namespace strata::io {
 namespace {
 
 constexpr bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
-char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
-
-bool iequals(std::string_view text, std::string_view lower_word) {
-  if (text.size() != lower_word.size()) return false;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (lower(text[i]) != lower_word[i]) return false;
-  }
-  return true;
-}
+using detail::iequals_ascii;
+using detail::lower_ascii;
 
 /// Where the parts of a token that follows the grammar are.
 struct Shape {
@@ -71,11 +66,12 @@ Shape shape_of(std::string_view token) {
 /// parsers (strtod, from_chars) would accept get their own reason.
 NumberFault fault_of_non_number(std::string_view token) {
   if (!token.empty() && (token.front() == '+' || token.front() == '-')) token.remove_prefix(1);
-  if (iequals(token, "inf") || iequals(token, "infinity") || iequals(token, "nan") ||
-      (token.size() >= 4 && iequals(token.substr(0, 4), "nan("))) {
+  if (iequals_ascii(token, "inf") || iequals_ascii(token, "infinity") ||
+      iequals_ascii(token, "nan") ||
+      (token.size() >= 4 && iequals_ascii(token.substr(0, 4), "nan("))) {
     return NumberFault::NonFiniteWord;
   }
-  if (token.size() >= 2 && token[0] == '0' && lower(token[1]) == 'x') {
+  if (token.size() >= 2 && token[0] == '0' && lower_ascii(token[1]) == 'x') {
     return NumberFault::Hexadecimal;
   }
   return NumberFault::NotANumber;

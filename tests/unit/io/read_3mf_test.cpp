@@ -44,7 +44,9 @@ Bbox3 bounds(const TriangleSoup& soup) {
   return box;
 }
 
-Error read_3mf_error(const fs::path& path) { return test::error_of(read_mesh(path), path.string()); }
+Error read_3mf_error(const fs::path& path) {
+  return test::error_of(read_mesh(path), path.string());
+}
 
 TEST(Read3mf, BuildItemAndNestedComponentTransformsApply) {
   const test::TempDir tmp("3mf");
