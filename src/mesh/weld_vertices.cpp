@@ -10,6 +10,7 @@
 #include <bit>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -92,6 +93,21 @@ class VertexTable {
     }
   }
 
+  /// The vertex at `key` (of hash `hash`), or kAbsent. Only reads: threads may look up side by
+  /// side while nothing is inserted.
+  static constexpr VertexIndex kAbsent = std::numeric_limits<VertexIndex>::max();
+  VertexIndex find(const PointKey& key, std::size_t hash, const std::vector<Vec3>& vertices) const {
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
+      const Slot& slot = slots_[i];
+      if (slot.vertex_plus_one == 0) return kAbsent;
+      if (slot.tag == static_cast<std::uint32_t>(hash >> 32) &&
+          key_of(vertices[slot.vertex_plus_one - 1]) == key) {
+        return slot.vertex_plus_one - 1;
+      }
+    }
+  }
+
  private:
   struct Slot {
     std::uint32_t tag = 0;
@@ -119,13 +135,12 @@ class VertexTable {
 /// many vertices as facets (the table and the vertices grow past it when a soup has more).
 std::size_t expected_vertices(std::size_t facets) { return facets / 2 + 3; }
 
-/// Welds a sequence of n points, point(i) for i in order: each point not yet in `table` is
-/// appended to `vertices` (and to the table), and found(i, its vertex) is called for every point.
-/// The table is larger than the caches: each point's slot is fetched a few points ahead, when its
-/// key and hash are computed, and both are kept until the point's turn.
-template <class Point, class Found>
-void weld_sequence(std::size_t n, const Point& point, VertexTable& table,
-                   std::vector<Vec3>& vertices, const Found& found) {
+/// Calls visit(i, key, hash) for the n points point(i) in order. The table is larger than the
+/// caches: each point's slot is fetched a few points ahead, when its key and hash are computed,
+/// and both are kept until the point's turn.
+template <class Point, class Visit>
+void visit_keys_ahead(std::size_t n, const Point& point, const VertexTable& table,
+                      const Visit& visit) {
   constexpr std::size_t kAhead = 16;
   struct Ahead {
     PointKey key;
@@ -141,15 +156,25 @@ void weld_sequence(std::size_t n, const Point& point, VertexTable& table,
   for (std::size_t i = 0; i < n; ++i) {
     const Ahead here = ahead[i % kAhead];
     if (i + kAhead < n) fetch(i + kAhead);
-    const auto [vertex, inserted] = table.find_or_insert(here.key, here.hash, vertices,
-                                                         static_cast<VertexIndex>(vertices.size()));
+    visit(i, here.key, here.hash);
+  }
+}
+
+/// Welds a sequence of n points, point(i) for i in order: each point not yet in `table` is
+/// appended to `vertices` (and to the table), and found(i, its vertex) is called for every point.
+template <class Point, class Found>
+void weld_sequence(std::size_t n, const Point& point, VertexTable& table,
+                   std::vector<Vec3>& vertices, const Found& found) {
+  visit_keys_ahead(n, point, table, [&](std::size_t i, const PointKey& key, std::size_t hash) {
+    const auto [vertex, inserted] =
+        table.find_or_insert(key, hash, vertices, static_cast<VertexIndex>(vertices.size()));
     if (inserted) {
       STRATA_ASSERT(vertices.size() < std::numeric_limits<VertexIndex>::max(),
                     "more distinct vertices than VertexIndex can number");
       vertices.push_back(point(i));
     }
     found(i, vertex);
-  }
+  });
 }
 
 /// Facets [begin, end) of the soup welded into `vertices`, each facet's vertices written to
@@ -200,13 +225,57 @@ IndexedMesh weld_vertices_in_blocks(const TriangleSoup& soup, std::size_t blocks
     weld_facets(soup, begin, end, own_table, own_vertices[b], mesh.triangles.data());
   });
   std::vector<std::vector<VertexIndex>> number_of(blocks);
-  for (std::size_t b = 1; b < blocks; ++b) {
+  const std::size_t last = blocks - 1;
+  for (std::size_t b = 1; b < last; ++b) {
     const std::vector<Vec3>& own = own_vertices[b];
     number_of[b].resize(own.size());
     weld_sequence(
         own.size(), [&](std::size_t i) -> const Vec3& { return own[i]; }, table, mesh.vertices,
         [&](std::size_t i, VertexIndex v) { number_of[b][i] = v; });
     std::vector<Vec3>().swap(own_vertices[b]);
+  }
+  // The last block, on the threads (on two threads, half the vertices rather than a few): no
+  // block after it looks its vertices up, so the table is only read. Its vertices the mesh
+  // already has are found side by side; the others, distinct (its own weld merged them), are
+  // new to the mesh and are appended in their own order, as welding them in turn would append
+  // them. Each stretch counts its new vertices, then numbers them from the count before it.
+  {
+    const std::vector<Vec3>& own = own_vertices[last];
+    std::vector<VertexIndex>& numbers = number_of[last];
+    numbers.resize(own.size());
+    constexpr std::size_t kStretch = 1 << 14;
+    const std::size_t stretches = (own.size() + kStretch - 1) / kStretch;
+    const auto stretch_of = [&](std::size_t k) {
+      return std::pair{k * kStretch, std::min(own.size(), (k + 1) * kStretch)};
+    };
+    std::vector<std::size_t> new_before(stretches + 1, 0);
+    tbb::parallel_for(std::size_t{0}, stretches, [&](std::size_t k) {
+      const auto [begin, end] = stretch_of(k);
+      std::size_t found_new = 0;
+      visit_keys_ahead(
+          end - begin, [&](std::size_t i) -> const Vec3& { return own[begin + i]; }, table,
+          [&](std::size_t i, const PointKey& key, std::size_t hash) {
+            const VertexIndex v = table.find(key, hash, mesh.vertices);
+            numbers[begin + i] = v;
+            found_new += v == VertexTable::kAbsent ? 1 : 0;
+          });
+      new_before[k + 1] = found_new;
+    });
+    std::partial_sum(new_before.begin(), new_before.end(), new_before.begin());
+    const std::size_t had = mesh.vertices.size();
+    STRATA_ASSERT(had + new_before[stretches] < std::numeric_limits<VertexIndex>::max(),
+                  "more distinct vertices than VertexIndex can number");
+    mesh.vertices.resize(had + new_before[stretches]);
+    tbb::parallel_for(std::size_t{0}, stretches, [&](std::size_t k) {
+      const auto [begin, end] = stretch_of(k);
+      auto next = static_cast<VertexIndex>(had + new_before[k]);
+      for (std::size_t i = begin; i < end; ++i) {
+        if (numbers[i] != VertexTable::kAbsent) continue;
+        mesh.vertices[next] = own[i];
+        numbers[i] = next++;
+      }
+    });
+    std::vector<Vec3>().swap(own_vertices[last]);
   }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(first_facet(1), facets, 4096),
                     [&](const auto& range) {
