@@ -150,7 +150,8 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
     out.repair_log = std::move(repaired->log);
     out.seconds_repair = std::chrono::duration<double>(Clock::now() - repair_started).count();
   }
-  auto grid = make_grid(m.mesh.bounds(), options->grid);
+  const Bbox3 bounds = m.mesh.bounds();
+  auto grid = make_grid(bounds, options->grid);
   if (!grid) return about_model(grid.error(), m.path);
   auto span = resolve_layer_range(options->layers, grid->nz);
   if (!span) {
@@ -159,7 +160,7 @@ Result<SliceOutcome> slice_to_folder(const SliceCommandOptions& o, const SliceRu
   GridSpec range_grid = *grid;
   range_grid.nz = span->count();
   out.plan = plan_job(range_grid, *formats, options->threads);
-  out.size_warning = size_warning(m.mesh.bounds(), Vec3{grid->dx, grid->dy, grid->dz});
+  out.size_warning = size_warning(bounds, Vec3{grid->dx, grid->dy, grid->dz});
   if (control.planned) control.planned(out.plan, out.size_warning);
   if (cancelled()) return cancel_error;
 

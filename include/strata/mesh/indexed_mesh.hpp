@@ -22,12 +22,10 @@ struct IndexedMesh {
   /// Corner c (0, 1 or 2) of facet f.
   const Vec3& corner(FacetIndex f, int c) const { return vertices[triangles[f][c]]; }
 
-  /// The bounding box of the vertices (empty for a mesh without vertices).
-  Bbox3 bounds() const {
-    Bbox3 box;
-    for (const auto& v : vertices) box.add(v);
-    return box;
-  }
+  /// The bounding box of the vertices (empty for a mesh without vertices): the box that adding
+  /// them to it one by one, in order, gives (of two equal bounds, -0 and +0, the first), computed
+  /// on the threads for a large mesh.
+  Bbox3 bounds() const;
 };
 
 }  // namespace strata
