@@ -245,12 +245,14 @@ IndexedMesh weld_vertices_in_blocks(const TriangleSoup& soup, std::size_t blocks
     numbers.resize(own.size());
     constexpr std::size_t kStretch = 1 << 14;
     const std::size_t stretches = (own.size() + kStretch - 1) / kStretch;
-    const auto stretch_of = [&](std::size_t k) {
-      return std::pair{k * kStretch, std::min(own.size(), (k + 1) * kStretch)};
+    const auto stretch_end = [&](std::size_t k) {
+      return std::min(own.size(), (k + 1) * kStretch);
     };
     std::vector<std::size_t> new_before(stretches + 1, 0);
     tbb::parallel_for(std::size_t{0}, stretches, [&](std::size_t k) {
-      const auto [begin, end] = stretch_of(k);
+      // Plain variables: clang 14 does not let a lambda capture a structured binding.
+      const std::size_t begin = k * kStretch;
+      const std::size_t end = stretch_end(k);
       std::size_t found_new = 0;
       visit_keys_ahead(
           end - begin, [&](std::size_t i) -> const Vec3& { return own[begin + i]; }, table,
@@ -267,9 +269,9 @@ IndexedMesh weld_vertices_in_blocks(const TriangleSoup& soup, std::size_t blocks
                   "more distinct vertices than VertexIndex can number");
     mesh.vertices.resize(had + new_before[stretches]);
     tbb::parallel_for(std::size_t{0}, stretches, [&](std::size_t k) {
-      const auto [begin, end] = stretch_of(k);
+      const std::size_t end = stretch_end(k);
       auto next = static_cast<VertexIndex>(had + new_before[k]);
-      for (std::size_t i = begin; i < end; ++i) {
+      for (std::size_t i = k * kStretch; i < end; ++i) {
         if (numbers[i] != VertexTable::kAbsent) continue;
         mesh.vertices[next] = own[i];
         numbers[i] = next++;
