@@ -33,13 +33,6 @@ using Halfedge = Arrangement::Halfedge_const_handle;
 
 constexpr long long kUnset = std::numeric_limits<long long>::min();
 
-/// The point with its exact value held from the start: a point built from two exact numbers
-/// would compute its exact value again, under a lock, the first time a comparison of its
-/// intervals ties.
-Point to_kernel(const ExactPoint2& p) {
-  return Point(Point::Rep(Kernel::Exact_kernel::Point_2(p.x.exact(), p.y.exact())));
-}
-
 ExactPoint2 from_kernel(const Point& p) {
   // The exact point's own coordinates: p.x() would be a lazy number of its own, its interval
   // computed again from the rational.

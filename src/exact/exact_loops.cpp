@@ -8,10 +8,6 @@ namespace {
 
 using Point = Kernel::Point_2;
 
-Point to_kernel(const ExactPoint2& p) {
-  return Point(Kernel::FT(p.x.exact()), Kernel::FT(p.y.exact()));
-}
-
 double shoelace(const std::vector<Point2>& points) {
   // Relative to the first point, so that far-from-origin parts lose no digits to cancellation.
   long double twice = 0.0L;

@@ -137,6 +137,14 @@ struct ExactPoint2 {
   Point2 rounded() const { return {x.rounded, y.rounded}; }
 };
 
+/// The point in the exact kernel, its exact value held from the start: a point built from two
+/// exact numbers would compute its exact value again, under a lock, the first time a comparison
+/// of its intervals ties.
+inline Kernel::Point_2 to_kernel(const ExactPoint2& p) {
+  using Point = Kernel::Point_2;
+  return Point(Point::Rep(Kernel::Exact_kernel::Point_2(p.x.exact(), p.y.exact())));
+}
+
 /// Exact comparison of two values: -1, 0, +1.
 int compare(const RoundedRational& u, const RoundedRational& v);
 
