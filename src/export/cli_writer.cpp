@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
@@ -21,6 +22,39 @@ std::int32_t cli_direction(const Contour& loop) {
   if (!loop.is_closed || loop.kind == LoopKind::Open) return 2;
   return loop.kind == LoopKind::Hole ? 0 : 1;
 }
+
+/// Where a layer's bytes are put together: straight in the layer's memory when it is encoded
+/// ahead (the text is then not copied once more), else in a buffer handed to the file a piece at
+/// a time.
+class LayerText {
+ public:
+  LayerText(detail::LayerBytes& out, std::size_t most)
+      : out_(out), text_(out.memory() != nullptr ? *out.memory() : buffer_) {
+    if (&text_ == &buffer_) buffer_.reserve(std::min(most, kFlushBytes + 256));
+  }
+  LayerText(const LayerText&) = delete;
+  LayerText& operator=(const LayerText&) = delete;
+
+  std::string& text() { return text_; }
+  /// Hands the buffer to the file once it holds a piece.
+  void flush_if_large() {
+    if (&text_ == &buffer_ && buffer_.size() >= kFlushBytes) flush();
+  }
+  /// Hands the rest to the file.
+  void finish() {
+    if (&text_ == &buffer_) flush();
+  }
+
+ private:
+  void flush() {
+    out_.write(buffer_);
+    buffer_.clear();
+  }
+
+  detail::LayerBytes& out_;
+  std::string buffer_;
+  std::string& text_;
+};
 
 std::string one_line(std::string text) {
   for (char& c : text) {
@@ -75,13 +109,6 @@ class CliWriter final : public detail::SingleFileSink {
   }
 
  private:
-  static void flush_if_large(detail::LayerBytes& out, std::string& s) {
-    if (s.size() >= kFlushBytes) {
-      out.write(s);
-      s.clear();
-    }
-  }
-
   void write_ascii_layer(detail::LayerBytes& out, const LayerResult& layer, double z_top) const {
     // Room for the layer's text reserved ahead, so that it is not moved as it grows: a number
     // and its separator take at most 25 characters (17 digits, sign, point and exponent), a
@@ -93,9 +120,9 @@ class CliWriter final : public detail::SingleFileSink {
       most += 64 + (loop.points.size() + 1) * 2 * kNumberBytes;
     most += 64 + layer.hatches.size() * 4 * kNumberBytes;
     out.reserve_more(most);
-    std::string s;
-    s.reserve(std::min(most, kFlushBytes + 256));
-    s = "$$LAYER/";
+    LayerText text(out, most);
+    std::string& s = text.text();
+    s += "$$LAYER/";
     detail::append_number(s, z_top);
     s += '\n';
     for (const Contour& loop : layer.contours.loops) {
@@ -106,7 +133,7 @@ class CliWriter final : public detail::SingleFileSink {
       for (std::size_t p = 0; p < n; ++p) {
         const Point2& pt = loop.points[p % loop.points.size()];
         detail::append_text(s, ',', pt.x, ',', pt.y);
-        flush_if_large(out, s);
+        text.flush_if_large();
       }
       s += '\n';
     }
@@ -117,15 +144,21 @@ class CliWriter final : public detail::SingleFileSink {
         const double y = run().grid.yc(h.row) + run().options.scan_offset_mm;
         detail::append_text(s, ',', h.x_start, ',', detail::RepeatedValue{row_y, y}, ',', h.x_end,
                             ',', detail::RepeatedValue{row_y, y});
-        flush_if_large(out, s);
+        text.flush_if_large();
       }
       s += '\n';
     }
-    out.write(s);
+    text.finish();
   }
 
   void write_binary_layer(detail::LayerBytes& out, const LayerResult& layer, double z_top) const {
-    std::string s;
+    // 6 bytes for the layer, 14 a line's or the hatches' start, 8 a point, 16 a hatch.
+    std::size_t most = 6 + 14;
+    for (const Contour& loop : layer.contours.loops) most += 14 + (loop.points.size() + 1) * 8;
+    most += layer.hatches.size() * 16;
+    out.reserve_more(most);
+    LayerText text(out, most);
+    std::string& s = text.text();
     detail::put_u16_le(s, kCliLayerLong);
     detail::put_f32_le(s, static_cast<float>(z_top));
     for (const Contour& loop : layer.contours.loops) {
@@ -140,7 +173,7 @@ class CliWriter final : public detail::SingleFileSink {
         const Point2& pt = loop.points[p % loop.points.size()];
         detail::put_f32_le(s, static_cast<float>(pt.x));
         detail::put_f32_le(s, static_cast<float>(pt.y));
-        flush_if_large(out, s);
+        text.flush_if_large();
       }
     }
     if (!layer.hatches.empty()) {
@@ -153,10 +186,10 @@ class CliWriter final : public detail::SingleFileSink {
         detail::put_f32_le(s, static_cast<float>(y));
         detail::put_f32_le(s, static_cast<float>(h.x_end));
         detail::put_f32_le(s, static_cast<float>(y));
-        flush_if_large(out, s);
+        text.flush_if_large();
       }
     }
-    out.write(s);
+    text.finish();
   }
 
   CliEncoding encoding_;
