@@ -73,39 +73,24 @@ class VertexTable {
   /// @return (vertex, whether it was inserted)
   std::pair<VertexIndex, bool> find_or_insert(const PointKey& key, std::size_t hash,
                                               const std::vector<Vec3>& vertices, VertexIndex next) {
-    const std::size_t mask = slots_.size() - 1;
-    for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
-      Slot& slot = slots_[i];
-      if (slot.vertex_plus_one == 0) {
-        if (2 * (size_ + 1) > slots_.size()) {
-          // Doubled first: the key is not in the table, and goes where the larger one puts it.
-          grow(vertices);
-          return find_or_insert(key, hash, vertices, next);
-        }
-        slot = Slot{static_cast<std::uint32_t>(hash >> 32), next + 1};
-        ++size_;
-        return {next, true};
-      }
-      if (slot.tag == static_cast<std::uint32_t>(hash >> 32) &&
-          key_of(vertices[slot.vertex_plus_one - 1]) == key) {
-        return {slot.vertex_plus_one - 1, false};
-      }
+    Slot& slot = slots_[slot_of(key, hash, vertices)];
+    if (slot.vertex_plus_one != 0) return {slot.vertex_plus_one - 1, false};
+    if (2 * (size_ + 1) > slots_.size()) {
+      // Doubled first: the key is not in the table, and goes where the larger one puts it.
+      grow(vertices);
+      return find_or_insert(key, hash, vertices, next);
     }
+    slot = Slot{static_cast<std::uint32_t>(hash >> 32), next + 1};
+    ++size_;
+    return {next, true};
   }
 
   /// The vertex at `key` (of hash `hash`), or kAbsent. Only reads: threads may look up side by
   /// side while nothing is inserted.
   static constexpr VertexIndex kAbsent = std::numeric_limits<VertexIndex>::max();
   VertexIndex find(const PointKey& key, std::size_t hash, const std::vector<Vec3>& vertices) const {
-    const std::size_t mask = slots_.size() - 1;
-    for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
-      const Slot& slot = slots_[i];
-      if (slot.vertex_plus_one == 0) return kAbsent;
-      if (slot.tag == static_cast<std::uint32_t>(hash >> 32) &&
-          key_of(vertices[slot.vertex_plus_one - 1]) == key) {
-        return slot.vertex_plus_one - 1;
-      }
-    }
+    const Slot& slot = slots_[slot_of(key, hash, vertices)];
+    return slot.vertex_plus_one == 0 ? kAbsent : slot.vertex_plus_one - 1;
   }
 
  private:
@@ -113,6 +98,20 @@ class VertexTable {
     std::uint32_t tag = 0;
     VertexIndex vertex_plus_one = 0;  ///< 0: empty
   };
+
+  /// The slot that holds `key`, or else the empty slot where its probe ends.
+  std::size_t slot_of(const PointKey& key, std::size_t hash,
+                      const std::vector<Vec3>& vertices) const {
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
+      const Slot& slot = slots_[i];
+      if (slot.vertex_plus_one == 0) return i;
+      if (slot.tag == static_cast<std::uint32_t>(hash >> 32) &&
+          key_of(vertices[slot.vertex_plus_one - 1]) == key) {
+        return i;
+      }
+    }
+  }
 
   void grow(const std::vector<Vec3>& vertices) {
     ZeroedPageArray<Slot> old(slots_.size() * 2);
