@@ -10,8 +10,8 @@
 
 namespace strata::test {
 
-/// The value a reader returned; fails the current test, showing `input` and the error, when it
-/// returned an error (and then gives an empty value).
+/// The value a call returned; fails the current test, showing `input` (what was read or done)
+/// and the error, when it returned an error (and then gives an empty value).
 template <class T>
 T value_of(Result<T> result, std::string_view input) {
   EXPECT_TRUE(result.has_value()) << input << ": " << result.error().to_string();

@@ -14,7 +14,7 @@
 #include "support/corpus.hpp"
 #include "support/mesh_reading.hpp"
 #include "support/read_file.hpp"
-#include "support/read_result.hpp"
+#include "support/result_checks.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 #include "support/three_mf_package.hpp"

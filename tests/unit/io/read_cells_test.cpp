@@ -13,7 +13,7 @@
 
 #include "strata/export/cells_writer.hpp"
 #include "support/mesh_reading.hpp"
-#include "support/read_result.hpp"
+#include "support/result_checks.hpp"
 #include "support/sink_runs.hpp"
 #include "support/text_meshes.hpp"
 

@@ -17,7 +17,7 @@
 #include <thread>
 #include <vector>
 
-#include "support/read_result.hpp"
+#include "support/result_checks.hpp"
 #include "support/temp_dir.hpp"
 
 namespace strata::io {

@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "io/read_mesh_internal.hpp"
-#include "support/read_result.hpp"
+#include "support/result_checks.hpp"
 
 namespace strata::io {
 namespace {

@@ -15,7 +15,7 @@
 
 #include "io/read_mesh_internal.hpp"
 #include "support/mesh_reading.hpp"
-#include "support/read_result.hpp"
+#include "support/result_checks.hpp"
 
 namespace strata::io {
 namespace {

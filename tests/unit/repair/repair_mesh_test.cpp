@@ -13,6 +13,7 @@
 #include "strata/mesh/primitive_models.hpp"
 #include "strata/mesh/weld_vertices.hpp"
 #include "support/mesh_builders.hpp"
+#include "support/result_checks.hpp"
 
 namespace strata::repair {
 namespace {
@@ -39,9 +40,7 @@ diagnose::MeshReport diagnose_soup(const TriangleSoup& soup) {
 }
 
 RepairResult repaired(const TriangleSoup& soup, bool fill_holes = false) {
-  auto result = repair_mesh(soup, RepairOptions{.fill_holes = fill_holes});
-  EXPECT_TRUE(result.has_value()) << result.error().to_string();
-  return result.has_value() ? std::move(result).value() : RepairResult{};
+  return test::value_of(repair_mesh(soup, RepairOptions{.fill_holes = fill_holes}), "repair_mesh");
 }
 
 /// The counts of changes, which a second repair must find all zero.
