@@ -16,14 +16,13 @@
 #include <numeric>
 #include <span>
 #include <string>
-#include <tuple>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "core/group_by_key.hpp"
 #include "core/huge_pages.hpp"
 #include "diagnose/exact_geometry.hpp"
+#include "diagnose/find_near_vertices_internal.hpp"
 #include "diagnose/find_self_intersections_internal.hpp"
 #include "strata/core/error.hpp"
 
@@ -284,90 +283,6 @@ double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
 bool strictly_inside(const Bbox3& inner, const Bbox3& outer) {
   return outer.min.x < inner.min.x && outer.min.y < inner.min.y && outer.min.z < inner.min.z &&
          inner.max.x < outer.max.x && inner.max.y < outer.max.y && inner.max.z < outer.max.z;
-}
-
-struct CellKey {
-  std::int64_t x, y, z;
-  friend bool operator==(const CellKey&, const CellKey&) = default;
-};
-
-struct CellKeyHash {
-  std::size_t operator()(const CellKey& k) const {
-    std::uint64_t h = static_cast<std::uint64_t>(k.x) * 0x9E3779B97F4A7C15ULL;
-    h ^= static_cast<std::uint64_t>(k.y) * 0xC2B2AE3D27D4EB4FULL + (h << 6) + (h >> 2);
-    h ^= static_cast<std::uint64_t>(k.z) * 0x165667B19E3779F9ULL + (h << 6) + (h >> 2);
-    return static_cast<std::size_t>(h);
-  }
-};
-
-std::int64_t cell_coordinate(double offset, double cell) {
-  // Clamped so that absurd tolerances cannot overflow; clamping only merges far cells, which
-  // costs time, never a missed pair.
-  const double q = std::floor(offset / cell);
-  constexpr double kLimit = 4.0e18;
-  return static_cast<std::int64_t>(std::clamp(q, -kLimit, kLimit));
-}
-
-/// Pairs of distinct vertices closer than `tolerance`, found through a grid hash whose cells are
-/// twice that size, so that the ball around a vertex meets at most 2 x 2 x 2 cells.
-void find_near_vertices(const IndexedMesh& mesh, const Bbox3& bounds, double tolerance,
-                        std::size_t max_checks, std::size_t limit, MeshReport& report) {
-  const std::size_t nv = mesh.vertices.size();
-  const double cell = 2.0 * tolerance;
-  const auto offset = [&](const Vec3& p) {
-    return Vec3{p.x - bounds.min.x, p.y - bounds.min.y, p.z - bounds.min.z};
-  };
-  std::vector<CellKey> keys(nv);
-  for (std::size_t i = 0; i < nv; ++i) {
-    const Vec3 o = offset(mesh.vertices[i]);
-    keys[i] = {cell_coordinate(o.x, cell), cell_coordinate(o.y, cell), cell_coordinate(o.z, cell)};
-  }
-  std::vector<VertexIndex> order(nv);
-  std::iota(order.begin(), order.end(), 0U);
-  std::sort(order.begin(), order.end(), [&](VertexIndex a, VertexIndex b) {
-    return std::tie(keys[a].x, keys[a].y, keys[a].z, a) <
-           std::tie(keys[b].x, keys[b].y, keys[b].z, b);
-  });
-  std::unordered_map<CellKey, std::pair<std::size_t, std::size_t>, CellKeyHash> cells;
-  cells.reserve(nv);
-  for (std::size_t begin = 0; begin < nv;) {
-    std::size_t end = begin + 1;
-    while (end < nv && keys[order[end]] == keys[order[begin]]) ++end;
-    cells.emplace(keys[order[begin]], std::make_pair(begin, end));
-    begin = end;
-  }
-
-  FirstOccurrences<PointPair> near{limit};
-  const double tolerance2 = tolerance * tolerance;
-  std::size_t checks = 0;
-  for (std::size_t i = 0; i < nv && !report.near_vertices_truncated; ++i) {
-    const Vec3& p = mesh.vertices[i];
-    const Vec3 o = offset(p);
-    const CellKey lo{cell_coordinate(o.x - tolerance, cell), cell_coordinate(o.y - tolerance, cell),
-                     cell_coordinate(o.z - tolerance, cell)};
-    const CellKey hi{cell_coordinate(o.x + tolerance, cell), cell_coordinate(o.y + tolerance, cell),
-                     cell_coordinate(o.z + tolerance, cell)};
-    for (std::int64_t cx = lo.x; cx <= hi.x; ++cx) {
-      for (std::int64_t cy = lo.y; cy <= hi.y; ++cy) {
-        for (std::int64_t cz = lo.z; cz <= hi.z; ++cz) {
-          const auto it = cells.find({cx, cy, cz});
-          if (it == cells.end()) continue;
-          for (std::size_t s = it->second.first; s < it->second.second; ++s) {
-            const VertexIndex j = order[s];
-            if (j <= i) continue;  // each pair once, from its lower vertex
-            if (++checks > max_checks) {
-              report.near_vertices_truncated = true;
-              break;
-            }
-            const Vec3& q = mesh.vertices[j];
-            const double ex = q.x - p.x, ey = q.y - p.y, ez = q.z - p.z;
-            if (ex * ex + ey * ey + ez * ez < tolerance2) near.add(i, {p, q});
-          }
-        }
-      }
-    }
-  }
-  report.near_vertices = near.finish();
 }
 
 /// Whether `facets` (a few, each holding vertex v once) run around v as one cycle, as about a
@@ -764,8 +679,10 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
       const double tolerance = options.near_vertex_mm.value_or(1e-6 * diagonal);
       report.near_vertex_tolerance_mm = tolerance;
       if (tolerance > 0.0 && std::isfinite(tolerance)) {
-        find_near_vertices(mesh, report.bounds, tolerance, options.max_near_vertex_checks, limit,
-                           report);
+        detail::NearVertices near = detail::find_near_vertices(
+            mesh, report.bounds, tolerance, options.max_near_vertex_checks, limit);
+        report.near_vertices = std::move(near.pairs);
+        report.near_vertices_truncated = near.truncated;
       }
     }
   };
