@@ -713,12 +713,9 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
     }
   };
 
-  // The edges and shells take longest (their volumes' parts run in parallel again): first, so
-  // that they start at once while the other thread takes the rest.
-  tbb::parallel_invoke(find_edges_and_shells, find_vertex_defects, check_stored_normals);
-
-  // ---- self-intersections
-  if (options.check_self_intersections) {
+  const auto find_self_intersections = [&] {
+    // ---- self-intersections
+    if (!options.check_self_intersections) return;
     report.self_intersections_checked = true;
     const detail::SelfIntersections found =
         detail::find_self_intersections(mesh, degenerate, options.max_self_intersection_pairs,
@@ -727,7 +724,13 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
     const std::size_t kept = std::min(found.pairs.size(), limit);
     report.self_intersections.locations.assign(found.pairs.begin(), found.pairs.begin() + kept);
     report.self_intersections_truncated = found.truncated;
-  }
+  };
+
+  // The longest first, so that they start at once while the other threads take the rest: the
+  // self-intersections' sweep when they are asked for, then the edges and shells (their
+  // volumes' parts run in parallel again).
+  tbb::parallel_invoke(find_self_intersections, find_edges_and_shells, find_vertex_defects,
+                       check_stored_normals);
 
   judge(report);
   return report;

@@ -1,9 +1,12 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "diagnose/find_self_intersections_internal.hpp"
@@ -97,19 +100,43 @@ SelfIntersections find_self_intersections(const IndexedMesh& mesh, const std::ve
     return result;
   }
 
+  // The sweep reports the candidate pairs in an order of its own, one at a time: they are tested
+  // a batch at a time on the threads, and taken in that order, so that the limits stop the
+  // search at the very pair where testing them one by one would.
   const PairTester tester(mesh);
+  constexpr std::size_t kBatch = 1 << 14;
+  std::vector<FacetPair> batch;
+  batch.reserve(kBatch);
+  std::vector<std::uint8_t> meets(kBatch);
+  const auto test_batch = [&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch.size(), 256),
+                      [&](const auto& range) {
+                        for (std::size_t k = range.begin(); k < range.end(); ++k) {
+                          meets[k] = tester.intersect(batch[k].first, batch[k].second) ? 1 : 0;
+                        }
+                      });
+    for (std::size_t k = 0; k < batch.size(); ++k) {
+      if (meets[k] == 0) continue;
+      if (result.pairs.size() == max_pairs) throw StopSearch{};
+      result.pairs.push_back(
+          {std::min(batch[k].first, batch[k].second), std::max(batch[k].first, batch[k].second)});
+    }
+    batch.clear();
+  };
   std::size_t candidates = 0;
   // A limit stops the search only when there is more to do than it allows.
   auto callback = [&](const Box& a, const Box& b) {
-    if (candidates == max_candidates) throw StopSearch{};
-    ++candidates;
-    if (tester.intersect(a.info(), b.info())) {
-      if (result.pairs.size() == max_pairs) throw StopSearch{};
-      result.pairs.push_back({std::min(a.info(), b.info()), std::max(a.info(), b.info())});
+    if (candidates == max_candidates) {
+      test_batch();
+      throw StopSearch{};
     }
+    ++candidates;
+    batch.push_back({a.info(), b.info()});
+    if (batch.size() == kBatch) test_batch();
   };
   try {
     CGAL::box_self_intersection_d<CGAL::Sequential_tag>(boxes.begin(), boxes.end(), callback);
+    test_batch();
   } catch (const StopSearch&) {
     result.truncated = true;
   }

@@ -19,6 +19,9 @@ struct SelfIntersections {
 /// are not reported. Two facets sharing an edge intersect when they are coplanar and lie on the
 /// same side of it; two facets sharing one vertex intersect when an edge opposite the shared
 /// vertex meets the other facet.
+/// The candidate pairs (facets whose boxes overlap) are tested on the threads, a batch at a time,
+/// and taken in the order of the sweep that finds them: the limits stop the search where testing
+/// them one by one would, whatever the number of threads.
 /// @param max_pairs       stop after this many intersecting pairs
 /// @param max_candidates  stop after testing this many pairs of overlapping bounding boxes
 SelfIntersections find_self_intersections(const IndexedMesh& mesh, const std::vector<bool>& skip,

@@ -601,9 +601,14 @@ TEST(DiagnoseMesh, OneThreadAndSeveralGiveTheSameReport) {
   // 84,000 facets: the counting sorts by vertex cut them into one range a thread.
   const TriangleSoup soup = soup_of(random_cluster_facets(4, 6000));
   const IndexedMesh mesh = weld_vertices(soup);
-  const std::string several = mesh_report_json(diagnose_mesh(mesh, soup, keep_every_location()));
+  // The self-intersections too: several batches of candidates, tested beside the other checks.
+  DiagnoseOptions options = keep_every_location();
+  options.check_self_intersections = true;
+  const MeshReport report = diagnose_mesh(mesh, soup, options);
+  EXPECT_GT(report.self_intersections.count, 1000U);
+  const std::string several = mesh_report_json(report);
   const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
-  EXPECT_EQ(mesh_report_json(diagnose_mesh(mesh, soup, keep_every_location())), several);
+  EXPECT_EQ(mesh_report_json(diagnose_mesh(mesh, soup, options)), several);
 }
 
 TEST(DiagnoseMesh, ShellsOfManyBoxesInShuffledFacetOrderAreListedByTheirLowestFacet) {

@@ -1,5 +1,13 @@
+#include <CGAL/Bbox_3.h>
+#include <CGAL/box_intersection_d.h>
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "diagnose/find_self_intersections_internal.hpp"
@@ -54,6 +62,117 @@ TEST(FindSelfIntersections, StopsAtCandidateLimit) {
       find_self_intersections(piercing_pair(), std::vector<bool>(3, false), 100, 0);
   EXPECT_TRUE(found.pairs.empty());
   EXPECT_TRUE(found.truncated);
+}
+
+/// Two families of 150 large triangles, one in the planes x = i and one in the planes y = j: each
+/// of one family crosses each of the other (22,500 pairs, more than a batch of tests), and no two
+/// of a family meet. Among them, small triangles at the top whose boxes touch some of the large
+/// ones', and which meet none: candidates that do not intersect, all along the sweep.
+IndexedMesh crossing_families() {
+  constexpr int kEach = 150;
+  constexpr double kFar = 3.0 * kEach;
+  IndexedMesh mesh;
+  const auto add = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+    const auto v = static_cast<VertexIndex>(mesh.vertices.size());
+    mesh.vertices.insert(mesh.vertices.end(), {a, b, c});
+    mesh.triangles.push_back({v, v + 1, v + 2});
+  };
+  for (int k = 0; k < kEach; ++k) {
+    const double at = k;
+    add({at, -1, -1}, {at, kFar, -1}, {at, -1, kFar});
+    add({-1, at, -1}, {kFar, at, -1}, {-1, at, kFar});
+    if (k % 3 == 0)
+      add({at + 0.2, at + 0.2, kFar}, {at + 0.8, at + 0.2, kFar}, {at, at + 0.8, kFar});
+  }
+  return mesh;
+}
+
+/// The search by its definition: the sweep's candidate pairs taken one by one, in its order,
+/// each intersecting when it is among `intersecting`, until a limit is reached.
+SelfIntersections one_by_one(const IndexedMesh& mesh,
+                             const std::set<std::pair<FacetIndex, FacetIndex>>& intersecting,
+                             std::size_t max_pairs, std::size_t max_candidates) {
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, FacetIndex,
+                                                        CGAL::Box_intersection_d::ID_EXPLICIT>;
+  std::vector<Box> boxes;
+  for (FacetIndex f = 0; f < mesh.triangles.size(); ++f) {
+    CGAL::Bbox_3 box;
+    for (const VertexIndex v : mesh.triangles[f]) {
+      const Vec3& p = mesh.vertices[v];
+      box += CGAL::Bbox_3(p.x, p.y, p.z, p.x, p.y, p.z);
+    }
+    boxes.emplace_back(box, f);
+  }
+  std::vector<std::pair<FacetIndex, FacetIndex>> candidates;
+  CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
+      boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
+        candidates.push_back({std::min(a.info(), b.info()), std::max(a.info(), b.info())});
+      });
+  SelfIntersections out;
+  for (std::size_t k = 0; k < candidates.size() && !out.truncated; ++k) {
+    if (k == max_candidates) {
+      out.truncated = true;
+    } else if (intersecting.count(candidates[k]) != 0) {
+      if (out.pairs.size() == max_pairs) {
+        out.truncated = true;
+      } else {
+        out.pairs.push_back({candidates[k].first, candidates[k].second});
+      }
+    }
+  }
+  std::sort(out.pairs.begin(), out.pairs.end(), [](const FacetPair& x, const FacetPair& y) {
+    return std::pair{x.first, x.second} < std::pair{y.first, y.second};
+  });
+  return out;
+}
+
+TEST(FindSelfIntersections, LimitsStopAtThePairWhereTestingOneByOneWould) {
+  const IndexedMesh mesh = crossing_families();
+  const std::vector<bool> none(mesh.triangles.size(), false);
+  constexpr std::size_t kAll = std::numeric_limits<std::size_t>::max();
+  const SelfIntersections every = find_self_intersections(mesh, none, kAll, kAll);
+  ASSERT_FALSE(every.truncated);
+  ASSERT_EQ(every.pairs.size(), 150U * 150U);
+  std::set<std::pair<FacetIndex, FacetIndex>> intersecting;
+  for (const FacetPair& pair : every.pairs) {
+    // One of each family: the small triangles meet nothing, and a family's planes are apart.
+    ASSERT_EQ(mesh.vertices[mesh.triangles[pair.first][0]].z, -1.0);
+    ASSERT_EQ(mesh.vertices[mesh.triangles[pair.second][0]].z, -1.0);
+    ASSERT_NE(mesh.vertices[mesh.triangles[pair.first][0]].x,
+              mesh.vertices[mesh.triangles[pair.second][0]].x);
+    intersecting.insert({pair.first, pair.second});
+  }
+  const std::size_t candidates = [&] {
+    std::size_t n = 0;
+    while (one_by_one(mesh, intersecting, kAll, n).truncated) n += 5'000;
+    return n;
+  }();
+  ASSERT_GT(candidates, every.pairs.size());  // the small triangles' candidates among them
+  for (const auto& [max_pairs, max_candidates] :
+       std::vector<std::pair<std::size_t, std::size_t>>{{kAll, kAll},
+                                                        {1, kAll},
+                                                        {16'383, kAll},
+                                                        {16'384, kAll},
+                                                        {20'000, kAll},
+                                                        {kAll, 16'383},
+                                                        {kAll, 16'385},
+                                                        {kAll, 20'001},
+                                                        {18'000, 20'001}}) {
+    SCOPED_TRACE(testing::Message() << max_pairs << " pairs, " << max_candidates << " candidates");
+    const SelfIntersections expected = one_by_one(mesh, intersecting, max_pairs, max_candidates);
+    for (const int threads : {1, 2, 4}) {
+      SCOPED_TRACE(threads);
+      const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+      const SelfIntersections found =
+          find_self_intersections(mesh, none, max_pairs, max_candidates);
+      EXPECT_EQ(found.truncated, expected.truncated);
+      ASSERT_EQ(found.pairs.size(), expected.pairs.size());
+      for (std::size_t k = 0; k < found.pairs.size(); ++k) {
+        ASSERT_EQ(found.pairs[k].first, expected.pairs[k].first) << k;
+        ASSERT_EQ(found.pairs[k].second, expected.pairs[k].second) << k;
+      }
+    }
+  }
 }
 
 }  // namespace
