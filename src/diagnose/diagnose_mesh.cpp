@@ -127,6 +127,24 @@ class FirstOccurrences {
   std::vector<T> locations_;  ///< by slot; slot 0 is scratch
 };
 
+/// The i where codes[i] == wanted, listed as FirstOccurrences lists them when they are added in
+/// increasing order of i: the first `limit` (location(i) each), and how many there are. A count
+/// and a scan that stops early, where adding each occurrence in turn costs a call apiece.
+template <class T, class Location>
+Occurrences<T> occurrences_in_order(std::span<const std::uint8_t> codes, std::uint8_t wanted,
+                                    std::size_t limit, const Location& location) {
+  Occurrences<T> out;
+  out.count = static_cast<std::size_t>(std::count(codes.begin(), codes.end(), wanted));
+  for (std::size_t i = 0; i < codes.size() && out.locations.size() < std::min(limit, out.count);
+       ++i) {
+    if (codes[i] == wanted) out.locations.push_back(location(i));
+  }
+  return out;
+}
+
+/// What a facet's stored normal is found to be.
+enum class NormalFinding : std::uint8_t { None, Flipped, Zero, NonFinite };
+
 class UnionFind {
  public:
   explicit UnionFind(std::size_t n) { reset(n); }
@@ -390,16 +408,10 @@ void find_vertex_defects_and_duplicates(const IndexedMesh& mesh,
       is_non_manifold[v] = num_fans > 1 ? 1 : 0;
     }
   });
-  FirstOccurrences<Vec3> non_manifold{limit};
-  for (std::size_t v = 0; v < nv; ++v) {
-    if (is_non_manifold[v] != 0) non_manifold.add(v, mesh.vertices[v]);
-  }
-  report.non_manifold_vertices = non_manifold.finish();
-  FirstOccurrences<FacetIndex> duplicates{limit};
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    if (is_duplicate[f] != 0) duplicates.add(f, static_cast<FacetIndex>(f));
-  }
-  report.duplicate_facets = duplicates.finish();
+  report.non_manifold_vertices = occurrences_in_order<Vec3>(
+      is_non_manifold, 1, limit, [&](std::size_t v) { return mesh.vertices[v]; });
+  report.duplicate_facets = occurrences_in_order<FacetIndex>(
+      is_duplicate, 1, limit, [](std::size_t f) { return static_cast<FacetIndex>(f); });
 }
 
 std::string plural(std::size_t n, const char* singular, const char* plural_form) {
@@ -691,25 +703,35 @@ MeshReport diagnose_mesh(const IndexedMesh& mesh, const TriangleSoup& soup,
     // ---- stored normals
     if (!soup.stored_normals.empty() && soup.stored_normals.size() == nf) {
       report.normals_checked = true;
-      FirstOccurrences<FacetIndex> flipped{limit}, zero{limit}, non_finite{limit};
-      for (std::size_t f = 0; f < nf; ++f) {
-        const Vec3& n = soup.stored_normals[f];
-        const auto id = static_cast<FacetIndex>(f);
-        if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) {
-          non_finite.add(f, id);
-        } else if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) {
-          zero.add(f, id);
-        } else if (!degenerate[f]) {
-          const auto& t = mesh.triangles[f];
-          if (detail::normal_agreement_sign(n, mesh.vertices[t[0]], mesh.vertices[t[1]],
-                                            mesh.vertices[t[2]]) < 0) {
-            flipped.add(f, id);
+      // Each facet's finding on the threads, listed in facet order after: many files store a
+      // zero normal for every facet.
+      const auto finding = std::make_unique_for_overwrite<std::uint8_t[]>(nf);
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nf, 4096), [&](const auto& range) {
+        for (std::size_t f = range.begin(); f < range.end(); ++f) {
+          const Vec3& n = soup.stored_normals[f];
+          NormalFinding found = NormalFinding::None;
+          if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) {
+            found = NormalFinding::NonFinite;
+          } else if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) {
+            found = NormalFinding::Zero;
+          } else if (!degenerate[f]) {
+            const auto& t = mesh.triangles[f];
+            if (detail::normal_agreement_sign(n, mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                              mesh.vertices[t[2]]) < 0) {
+              found = NormalFinding::Flipped;
+            }
           }
+          finding[f] = static_cast<std::uint8_t>(found);
         }
-      }
-      report.flipped_normals = flipped.finish();
-      report.zero_normals = zero.finish();
-      report.non_finite_normals = non_finite.finish();
+      });
+      const std::span<const std::uint8_t> findings(finding.get(), nf);
+      const auto facet = [](std::size_t f) { return static_cast<FacetIndex>(f); };
+      report.flipped_normals = occurrences_in_order<FacetIndex>(
+          findings, static_cast<std::uint8_t>(NormalFinding::Flipped), limit, facet);
+      report.zero_normals = occurrences_in_order<FacetIndex>(
+          findings, static_cast<std::uint8_t>(NormalFinding::Zero), limit, facet);
+      report.non_finite_normals = occurrences_in_order<FacetIndex>(
+          findings, static_cast<std::uint8_t>(NormalFinding::NonFinite), limit, facet);
     }
   };
 

@@ -426,6 +426,51 @@ TEST(DiagnoseMesh, ZeroAndNonFiniteStoredNormalsAreCountedApart) {
   EXPECT_EQ(r.flipped_normals.count, 0U);
 }
 
+TEST(DiagnoseMesh, StoredNormalsOfManyFacetsAreListedInFacetOrder) {
+  // 2,000 boxes apart (24,000 facets, several ranges for the threads), their stored normals zero,
+  // not finite, reversed or right by a pattern that mixes the three findings.
+  std::vector<Triangle> facets;
+  for (int b = 0; b < 2000; ++b) {
+    const Vec3 lo{3.0 * (b % 50), 3.0 * (b / 50), 0.0};
+    for (const Triangle& t : box_facets_lo_hi_diagonals(lo, {lo.x + 1, lo.y + 1, 1})) {
+      facets.push_back(t);
+    }
+  }
+  TriangleSoup soup = soup_of(facets);
+  std::vector<FacetIndex> zero, non_finite, flipped;
+  for (FacetIndex f = 0; f < facets.size(); ++f) {
+    Vec3& n = soup.stored_normals[f];
+    if (f % 7 == 3) {
+      n = {0.0, 0.0, -0.0};
+      zero.push_back(f);
+    } else if (f % 11 == 5) {
+      n.y = std::numeric_limits<double>::infinity();
+      non_finite.push_back(f);
+    } else if (f % 5 == 1) {
+      n = {-n.x, -n.y, -n.z};
+      flipped.push_back(f);
+    }
+  }
+  const auto expect_listed = [](const Occurrences<FacetIndex>& found,
+                                const std::vector<FacetIndex>& all, std::size_t limit) {
+    EXPECT_EQ(found.count, all.size());
+    EXPECT_EQ(found.locations,
+              std::vector<FacetIndex>(all.begin(), all.begin() + std::min(limit, all.size())));
+  };
+  for (const int threads : {1, 2, 4}) {
+    SCOPED_TRACE(threads);
+    const tbb::global_control parallelism(tbb::global_control::max_allowed_parallelism, threads);
+    for (const std::size_t limit : {std::size_t{0}, std::size_t{3}, std::size_t{100'000}}) {
+      SCOPED_TRACE(limit);
+      const MeshReport r = diagnose(
+          soup, DiagnoseOptions{.max_locations = limit, .check_self_intersections = false});
+      expect_listed(r.zero_normals, zero, limit);
+      expect_listed(r.non_finite_normals, non_finite, limit);
+      expect_listed(r.flipped_normals, flipped, limit);
+    }
+  }
+}
+
 TEST(DiagnoseMesh, SoupWithoutNormalsSkipsTheNormalCheck) {
   TriangleSoup soup = soup_of(unit_box());
   soup.stored_normals.clear();
