@@ -1,14 +1,14 @@
 #pragma once
 
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+#include "core/usable_threads.hpp"
 
 namespace strata {
 
@@ -27,9 +27,7 @@ template <class Count, class Emit, class Storage>
 std::vector<Count> group_by_key(std::size_t num_keys, std::size_t num_sources, const Emit& emit,
                                 const Storage& storage) {
   constexpr std::size_t kMinSourcesARange = 65536;
-  const std::size_t threads = std::min<std::size_t>(
-      static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()),
-      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+  const std::size_t threads = usable_threads();
   const std::size_t ranges =
       std::clamp<std::size_t>(std::min(num_sources / kMinSourcesARange,
                                        2 * num_sources / std::max<std::size_t>(num_keys, 1)),

@@ -1,8 +1,6 @@
 #include <tbb/blocked_range.h>
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +8,7 @@
 #include <tuple>
 #include <vector>
 
+#include "core/usable_threads.hpp"
 #include "diagnose/find_near_vertices_internal.hpp"
 
 namespace strata::diagnose::detail {
@@ -188,10 +187,7 @@ NearVertices find_near_vertices(const IndexedMesh& mesh, const Bbox3& bounds, do
   // Their findings are then taken in order; the stretch where the checks run out is scanned again
   // with what is left of them, and ends the search where scanning in one pass would.
   constexpr std::size_t kVerticesAStretch = 8192;
-  const std::size_t threads =
-      std::min(static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()),
-               tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-  const std::size_t stretches_a_round = 4 * std::max<std::size_t>(threads, 1);
+  const std::size_t stretches_a_round = 4 * std::max<std::size_t>(usable_threads(), 1);
   const std::size_t stretches = (nv + kVerticesAStretch - 1) / kVerticesAStretch;
   NearVertices out;
   std::size_t checks_left = max_checks;

@@ -1,9 +1,7 @@
 #include "strata/mesh/weld_vertices.hpp"
 
 #include <tbb/blocked_range.h>
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <array>
@@ -15,6 +13,7 @@
 #include <vector>
 
 #include "core/huge_pages.hpp"
+#include "core/usable_threads.hpp"
 #include "mesh/weld_vertices_internal.hpp"
 #include "strata/core/error.hpp"
 
@@ -299,12 +298,9 @@ IndexedMesh weld_vertices(const TriangleSoup& soup) {
   // Blocks of at least kFacetsABlock facets, one a thread: below that, the numbering pass and the
   // tables' set-up cost more than the threads save.
   constexpr std::size_t kFacetsABlock = 1 << 16;
-  // The threads this run may use: the arena's, within a --threads limit.
-  const std::size_t threads =
-      std::min(static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()),
-               tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
   return detail::weld_vertices_in_blocks(
-      soup, std::min(threads, std::max<std::size_t>(soup.triangles.size() / kFacetsABlock, 1)));
+      soup,
+      std::min(usable_threads(), std::max<std::size_t>(soup.triangles.size() / kFacetsABlock, 1)));
 }
 
 }  // namespace strata
