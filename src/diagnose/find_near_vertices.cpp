@@ -189,6 +189,9 @@ NearVertices find_near_vertices(const IndexedMesh& mesh, const Bbox3& bounds, do
   constexpr std::size_t kVerticesAStretch = 8192;
   const std::size_t stretches_a_round = 4 * std::max<std::size_t>(usable_threads(), 1);
   const std::size_t stretches = (nv + kVerticesAStretch - 1) / kVerticesAStretch;
+  const auto scan_stretch = [&](std::size_t k, std::size_t budget, std::size_t keep) {
+    return scan(k * kVerticesAStretch, std::min(nv, (k + 1) * kVerticesAStretch), budget, keep);
+  };
   NearVertices out;
   std::size_t checks_left = max_checks;
   for (std::size_t round = 0; round < stretches && !out.truncated; round += stretches_a_round) {
@@ -196,14 +199,12 @@ NearVertices find_near_vertices(const IndexedMesh& mesh, const Bbox3& bounds, do
     std::vector<Found> found(round_end - round);
     const std::size_t keep = limit - out.pairs.locations.size();
     tbb::parallel_for(round, round_end, [&](std::size_t k) {
-      found[k - round] =
-          scan(k * kVerticesAStretch, std::min(nv, (k + 1) * kVerticesAStretch), checks_left, keep);
+      found[k - round] = scan_stretch(k, checks_left, keep);
     });
     for (std::size_t k = round; k < round_end; ++k) {
       Found& here = found[k - round];
       if (here.ran_out || here.checks > checks_left) {
-        here = scan(k * kVerticesAStretch, std::min(nv, (k + 1) * kVerticesAStretch), checks_left,
-                    limit - out.pairs.locations.size());
+        here = scan_stretch(k, checks_left, limit - out.pairs.locations.size());
       }
       checks_left -= here.checks;
       out.pairs.count += here.count;
